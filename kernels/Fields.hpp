@@ -1,0 +1,40 @@
+#pragma once
+// Particle fields as tag types (named, never numbered; see docs/design.md).
+// A field's storage is one Kokkos View per field, LayoutLeft so that each
+// component is contiguous (structure of arrays).
+#include <Kokkos_Core.hpp>
+#include <cstdint>
+#include <type_traits>
+
+namespace ondine {
+
+using ExecSpace = Kokkos::DefaultExecutionSpace;
+using MemSpace = ExecSpace::memory_space;
+
+namespace field {
+#define ONDINE_FIELD(Name, label_, value_t, vector_)  \
+  struct Name {                                        \
+    static constexpr const char* label = label_;       \
+    using value_type = value_t;                        \
+    static constexpr bool is_vector = vector_;         \
+  }
+ONDINE_FIELD(Position, "position", double, true);
+ONDINE_FIELD(Velocity, "velocity", double, true);
+ONDINE_FIELD(Density, "density", double, false);
+ONDINE_FIELD(Pressure, "pressure", double, false);
+ONDINE_FIELD(Mass, "mass", double, false);
+ONDINE_FIELD(GlobalId, "id", std::int64_t, false);
+ONDINE_FIELD(Acceleration, "acceleration", double, true);  // du/dt
+ONDINE_FIELD(DensityRate, "density_rate", double, false);  // drho/dt
+// Renormalised density gradient, thesis (2.42)-(2.44), read by the delta-SPH term (2.63).
+ONDINE_FIELD(DensityGradient, "density_gradient", double, true);
+#undef ONDINE_FIELD
+}  // namespace field
+
+template <class Tag, int D>
+using field_view_t =
+    std::conditional_t<Tag::is_vector,
+                       Kokkos::View<typename Tag::value_type* [D], Kokkos::LayoutLeft, MemSpace>,
+                       Kokkos::View<typename Tag::value_type*, MemSpace>>;
+
+}  // namespace ondine

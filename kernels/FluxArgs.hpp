@@ -1,0 +1,32 @@
+#pragma once
+// Everything a flux pass may read, whatever its terms; the selected term pack
+// takes what it needs (see src/solver/FluxDispatch.hpp).
+#include "kernels/NeighbourList.hpp"
+
+namespace ondine {
+
+template <int D>
+struct FluxArgs {
+  int n = 0;
+  NeighbourList<D> list;
+  PeriodicBox<D> box;
+  double R = 0;
+  Vec<D> body;
+  field_view_t<field::Position, D> x;
+  field_view_t<field::Velocity, D> u;
+  field_view_t<field::Density, D> rho;
+  field_view_t<field::Pressure, D> P;
+  field_view_t<field::Mass, D> m;
+  field_view_t<field::Acceleration, D> du;
+  field_view_t<field::DensityRate, D> drho;
+  field_view_t<field::DensityGradient, D> grad_rho;  // delta-SPH only
+  double nu = 0;             // viscous terms
+  double delta_coeff = 0;    // delta c0 R
+  double av_alpha_R_c0 = 0;  // artificial viscosity
+  double P_min = 0;          // background pressure
+};
+
+template <int D>
+using FluxFunction = void (*)(const FluxArgs<D>&);
+
+}  // namespace ondine

@@ -1,0 +1,80 @@
+#pragma once
+// Full (both-ways) neighbour list in CSR form, built from a CellList with a
+// cut-off R + skin, so that it stays valid until some particle has moved more
+// than skin/2 (Verlet). Physics reads it only through num_neighbours(i) and
+// neighbour(i, n). Two passes: count per particle, scan, fill; no atomics, so
+// the order is the deterministic cell order.
+#include "kernels/CellList.hpp"
+
+namespace ondine {
+
+// Calls f(j) for every j != i within the cut-off of i, in cell order.
+template <int D, class PositionView>
+struct CutoffVisitor {
+  CellGrid<D> g;
+  PeriodicBox<D> box;
+  Kokkos::View<int*, MemSpace> start, perm;
+  PositionView x;
+  double cut2;
+
+  template <class F>
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, F&& f) const {
+    const Vec<D> xi = load<D>(x, i);
+    int home[D];
+    for (int k = 0; k < D; ++k) home[k] = g.coord(xi[k], k);
+    for_each_adjacent_cell<D>(g, home, [&](const int c) {
+      for (int a = start(c); a < start(c + 1); ++a) {
+        const int j = perm(a);
+        if (j != i && norm2(box.delta(xi, load<D>(x, j))) < cut2) f(j);
+      }
+    });
+  }
+};
+
+template <int D>
+struct NeighbourList {
+  Kokkos::View<int*, MemSpace> offsets;     // n + 1
+  Kokkos::View<int*, MemSpace> neighbours;  // offsets(n)
+
+  KOKKOS_INLINE_FUNCTION int num_neighbours(int i) const { return offsets(i + 1) - offsets(i); }
+  KOKKOS_INLINE_FUNCTION int neighbour(int i, int n) const { return neighbours(offsets(i) + n); }
+
+  int total() const {
+    int t = 0;
+    Kokkos::deep_copy(t, Kokkos::subview(offsets, offsets.extent(0) - 1));
+    return t;
+  }
+
+  template <class PositionView>
+  void build(const CellList<D>& cells, const PeriodicBox<D>& box, const PositionView& x, int n, double cutoff) {
+    if (static_cast<int>(offsets.extent(0)) != n + 1)
+      offsets = Kokkos::View<int*, MemSpace>("ondine::NeighbourList::offsets", n + 1);
+    const double cut2 = cutoff * cutoff;
+    const auto g = cells.grid;
+    const auto start = cells.cell_start;
+    const auto perm = cells.sorted;
+    auto off = offsets;
+    const CutoffVisitor<D, PositionView> visit{g, box, start, perm, x, cut2};
+    Kokkos::parallel_for("ondine::NeighbourList::count", Kokkos::RangePolicy<ExecSpace>(0, n), KOKKOS_LAMBDA(const int i) {
+      int cnt = 0;
+      visit(i, [&](int) { ++cnt; });
+      off(i + 1) = cnt;
+      if (i == 0) off(0) = 0;
+    });
+    Kokkos::parallel_scan("ondine::NeighbourList::scan", Kokkos::RangePolicy<ExecSpace>(0, n + 1),
+                          KOKKOS_LAMBDA(const int i, int& partial, const bool final) {
+                            partial += off(i);
+                            if (final) off(i) = partial;
+                          });
+    const int total_pairs = total();
+    if (static_cast<int>(neighbours.extent(0)) < total_pairs)
+      neighbours = Kokkos::View<int*, MemSpace>("ondine::NeighbourList::neighbours", total_pairs + total_pairs / 8);
+    auto nb = neighbours;
+    Kokkos::parallel_for("ondine::NeighbourList::fill", Kokkos::RangePolicy<ExecSpace>(0, n), KOKKOS_LAMBDA(const int i) {
+      int p = off(i);
+      visit(i, [&](int j) { nb(p++) = j; });
+    });
+  }
+};
+
+}  // namespace ondine

@@ -1,0 +1,14 @@
+#pragma once
+#include "kernels/PairData.hpp"
+namespace ondine::term {
+// Tensile-instability correction, thesis (2.105): -(2 P_min / rho_i) w_j grad_i W_ij with
+// P_min = max(0, -min_k P_k), a global reduction before the pass. Flows without a free surface only.
+struct BackgroundPressure {
+  static constexpr const char* name = "background_pressure";
+  double P_min;
+  template <int D>
+  KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {
+    s.du += (-2.0 * P_min * q.omega_j * q.inv_rho_i) * q.gradW;
+  }
+};
+}  // namespace ondine::term

@@ -1,0 +1,25 @@
+#pragma once
+#include "kernels/Fields.hpp"
+#include "kernels/PairData.hpp"
+#include "kernels/PeriodicBox.hpp"
+namespace ondine::term {
+// delta-SPH density diffusion (Antuono et al.; thesis 2.60, 2.63):
+//   + delta c0 R w_j Psi_ij . grad_i W_ij,
+//   Psi_ij = 2 (rho_j - rho_i) (x_j - x_i)/|x_ij|^2 - (<grad rho>_i + <grad rho>_j),
+// with the renormalised gradients of DensityGradientPass.
+template <int D>
+struct DeltaSphDiffusion {
+  static constexpr const char* name = "delta_sph";
+  double coeff;  // delta c0 R
+  field_view_t<field::DensityGradient, D> grad_rho;
+  KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {
+    const double r2 = q.r * q.r;
+    double psi_dot = 0.0;
+    for (int k = 0; k < D; ++k) {
+      const double psi = -2.0 * (q.rho_j - q.rho_i) * q.xij[k] / r2 - (grad_rho(q.i, k) + grad_rho(q.j, k));
+      psi_dot += psi * q.gradW[k];
+    }
+    s.drho += coeff * q.omega_j * psi_dot;
+  }
+};
+}  // namespace ondine::term

@@ -1,0 +1,457 @@
+#include "scene/CaseFile.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <unistd.h>
+
+namespace ondine {
+
+namespace {
+
+// Schema-driven reading of one YAML document, with messages that point at the
+// offending line and key. Nodes created by --set carry no mark; messages name
+// the override instead.
+class Reader {
+ public:
+  Reader(std::string file, std::set<std::string> overridden)
+      : file_(std::move(file)), overridden_(std::move(overridden)) {}
+
+  [[noreturn]] void fail(const YAML::Node& at, const std::string& key, const std::string& what) const {
+    std::ostringstream m;
+    if (overridden_.count(key)) {
+      m << "--set " << key << ": " << what;
+    } else {
+      m << file_;
+      const YAML::Mark mk = at.IsDefined() ? at.Mark() : YAML::Mark::null_mark();
+      if (mk.line >= 0) m << ":" << mk.line + 1 << ":" << mk.column + 1;
+      m << ": key '" << key << "': " << what;
+    }
+    throw CaseError(m.str());
+  }
+
+  static std::string join(const std::string& path, const std::string& key) {
+    return path.empty() ? key : path + "." + key;
+  }
+
+  static std::string shown(const YAML::Node& n) {
+    if (n.IsScalar()) return "'" + n.Scalar() + "'";
+    if (n.IsSequence()) return "a list";
+    if (n.IsMap()) return "a mapping";
+    return "nothing";
+  }
+
+  void only_keys(const YAML::Node& map, const std::string& path, std::initializer_list<const char*> keys) const {
+    if (!map.IsMap()) fail(map, path.empty() ? "(top level)" : path, "expected a mapping, got " + shown(map));
+    for (auto it = map.begin(); it != map.end(); ++it) {
+      const std::string k = it->first.as<std::string>();
+      bool ok = false;
+      for (const char* a : keys) ok = ok || k == a;
+      if (!ok) {
+        std::string list;
+        for (const char* a : keys) list += (list.empty() ? "" : ", ") + std::string(a);
+        fail(it->first, join(path, k), "unknown key; expected one of: " + list);
+      }
+    }
+  }
+
+  YAML::Node required(const YAML::Node& map, const std::string& path, const char* key) const {
+    const YAML::Node n = map[key];
+    if (!n.IsDefined() || n.IsNull()) fail(map, join(path, key), "required key is missing");
+    return n;
+  }
+
+  double number(const YAML::Node& n, const std::string& key, const std::string& expect = "a number") const {
+    if (!n.IsScalar()) fail(n, key, "expected " + expect + ", got " + shown(n));
+    double v;
+    try {
+      v = n.as<double>();
+    } catch (const YAML::Exception&) {
+      fail(n, key, "expected " + expect + ", got " + shown(n));
+    }
+    if (!std::isfinite(v)) fail(n, key, "expected " + expect + ", got " + shown(n));
+    return v;
+  }
+
+  double positive(const YAML::Node& n, const std::string& key, const std::string& unit) const {
+    const double v = number(n, key, "a positive number" + unit);
+    if (!(v > 0)) fail(n, key, "expected a positive number" + unit + ", got " + shown(n));
+    return v;
+  }
+  double non_negative(const YAML::Node& n, const std::string& key, const std::string& unit) const {
+    const double v = number(n, key, "a number >= 0" + unit);
+    if (v < 0) fail(n, key, "expected a number >= 0" + unit + ", got " + shown(n));
+    return v;
+  }
+
+  long long integer(const YAML::Node& n, const std::string& key, long long lo, long long hi) const {
+    const std::string expect = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    if (!n.IsScalar()) fail(n, key, "expected " + expect + ", got " + shown(n));
+    long long v;
+    try {
+      v = n.as<long long>();
+    } catch (const YAML::Exception&) {
+      fail(n, key, "expected " + expect + ", got " + shown(n));
+    }
+    if (v < lo || v > hi) fail(n, key, "expected " + expect + ", got " + shown(n));
+    return v;
+  }
+
+  bool boolean(const YAML::Node& n, const std::string& key) const {
+    if (!n.IsScalar()) fail(n, key, "expected true or false, got " + shown(n));
+    try {
+      return n.as<bool>();
+    } catch (const YAML::Exception&) {
+      fail(n, key, "expected true or false, got " + shown(n));
+    }
+  }
+
+  std::string word(const YAML::Node& n, const std::string& key, std::initializer_list<const char*> choices) const {
+    std::string list;
+    for (const char* a : choices) list += (list.empty() ? "" : " | ") + std::string(a);
+    if (!n.IsScalar()) fail(n, key, "expected one of " + list + ", got " + shown(n));
+    const std::string s = n.Scalar();
+    for (const char* a : choices)
+      if (s == a) return s;
+    fail(n, key, "expected one of " + list + ", got " + shown(n));
+  }
+
+  Vec3 vector(const YAML::Node& n, const std::string& key, int dim, const std::string& unit) const {
+    const std::string expect = "a list of " + std::to_string(dim) + " numbers" + unit;
+    if (!n.IsSequence() || static_cast<int>(n.size()) != dim) fail(n, key, "expected " + expect + ", got " + shown(n) + (n.IsSequence() ? " of " + std::to_string(n.size()) : ""));
+    Vec3 v{0, 0, 0};
+    for (int k = 0; k < dim; ++k) v[k] = number(n[k], key + "[" + std::to_string(k) + "]", "a number" + unit);
+    return v;
+  }
+
+  std::array<bool, 3> flags(const YAML::Node& n, const std::string& key, int dim) const {
+    if (!n.IsSequence() || static_cast<int>(n.size()) != dim)
+      fail(n, key, "expected a list of " + std::to_string(dim) + " booleans, got " + shown(n));
+    std::array<bool, 3> v{false, false, false};
+    for (int k = 0; k < dim; ++k) v[k] = boolean(n[k], key + "[" + std::to_string(k) + "]");
+    return v;
+  }
+
+  const std::string& file() const { return file_; }
+
+ private:
+  std::string file_;
+  std::set<std::string> overridden_;
+};
+
+std::set<std::string> apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides) {
+  std::set<std::string> keys;
+  for (const std::string& o : overrides) {
+    const auto eq = o.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw CaseError("--set " + o + ": expected key=value (e.g. --set discretisation.dx=0.01)");
+    const std::string key = o.substr(0, eq);
+    YAML::Node value;
+    try {
+      value = YAML::Load(o.substr(eq + 1));
+    } catch (const YAML::Exception& e) {
+      throw CaseError("--set " + o + ": the value is not valid YAML (" + e.msg + ")");
+    }
+    // Walk the dotted path, creating mappings as needed; list items are addressed as key.N.
+    std::vector<std::string> parts;
+    std::stringstream ss(key);
+    for (std::string p; std::getline(ss, p, '.');) parts.push_back(p);
+    std::vector<YAML::Node> chain{root};
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+      YAML::Node cur = chain.back();
+      const bool index = !parts[i].empty() && parts[i].find_first_not_of("0123456789") == std::string::npos;
+      if (cur.IsSequence() && index) {
+        const std::size_t k = std::stoul(parts[i]);
+        if (k >= cur.size()) throw CaseError("--set " + key + ": list index " + parts[i] + " is out of range");
+        chain.push_back(cur[k]);
+      } else {
+        if (!cur.IsMap() && cur.IsDefined() && !cur.IsNull())
+          throw CaseError("--set " + key + ": '" + parts[i] + "' is not a mapping");
+        chain.push_back(cur[parts[i]]);
+      }
+    }
+    YAML::Node parent = chain.back();
+    const std::string& last = parts.back();
+    if (parent.IsSequence() && last.find_first_not_of("0123456789") == std::string::npos) {
+      const std::size_t k = std::stoul(last);
+      if (k >= parent.size()) throw CaseError("--set " + key + ": list index " + last + " is out of range");
+      parent[k] = value;
+    } else {
+      parent[last] = value;
+    }
+    keys.insert(key);
+  }
+  return keys;
+}
+
+KernelType kernel_of(const std::string& s) {
+  if (s == "quartic_spline") return KernelType::QuarticSpline;
+  if (s == "cubic_spline") return KernelType::CubicSpline;
+  return KernelType::WendlandC2;
+}
+
+// Bytes per particle of the largest scheme (fields + RK4 stage copies + neighbour
+// cells), a deliberately generous bound for the memory check.
+constexpr double bytes_per_particle(int dim) { return 8.0 * (6.0 * dim + 12.0) + 64.0; }
+
+}  // namespace
+
+std::size_t count_particles(const Scene& s) {
+  std::size_t n = 0;
+  for (const FluidBlock& b : s.blocks) {
+    std::size_t c = 1;
+    for (int k = 0; k < s.dimension; ++k)
+      c *= static_cast<std::size_t>(std::llround((b.box.max[k] - b.box.min[k]) / s.dx));
+    n += c;
+  }
+  return n;
+}
+
+Scene parse_case(const std::string& text, const std::string& path, const std::vector<std::string>& overrides) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw CaseError(path + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
+                    ": not valid YAML: " + e.msg);
+  }
+  if (!root.IsMap()) throw CaseError(path + ": expected a YAML mapping at the top level (see docs/case-file.md)");
+  const Reader r(path, apply_overrides(root, overrides));
+
+  r.only_keys(root, "", {"name", "dimension", "domain", "fluid", "discretisation", "fluid_blocks", "forces",
+                         "scheme", "time", "probes"});
+  Scene s;
+  s.source_file = path;
+  if (root["name"]) {
+    s.name = root["name"].as<std::string>();
+    if (s.name.empty() || s.name.find_first_of("/\\ ") != std::string::npos)
+      r.fail(root["name"], "name", "expected a name without spaces or slashes");
+  } else {
+    const auto slash = path.find_last_of('/');
+    std::string stem = path.substr(slash == std::string::npos ? 0 : slash + 1);
+    s.name = stem.substr(0, stem.rfind('.'));
+  }
+  s.dimension = static_cast<int>(r.integer(r.required(root, "", "dimension"), "dimension", 2, 3));
+  const int D = s.dimension;
+
+  // domain
+  const YAML::Node dom = r.required(root, "", "domain");
+  r.only_keys(dom, "domain", {"min", "max", "periodic"});
+  s.domain.min = r.vector(r.required(dom, "domain", "min"), "domain.min", D, " (m)");
+  s.domain.max = r.vector(r.required(dom, "domain", "max"), "domain.max", D, " (m)");
+  for (int k = 0; k < D; ++k)
+    if (!(s.domain.max[k] > s.domain.min[k]))
+      r.fail(dom["max"], "domain.max", "expected domain.max > domain.min in every axis");
+  if (dom["periodic"]) s.periodic = r.flags(dom["periodic"], "domain.periodic", D);
+
+  // discretisation
+  const YAML::Node disc = r.required(root, "", "discretisation");
+  r.only_keys(disc, "discretisation", {"dx", "kernel", "R_over_dx", "reorder_interval", "neighbour_skin"});
+  s.dx = r.positive(r.required(disc, "discretisation", "dx"), "discretisation.dx", " (m)");
+  if (disc["kernel"])
+    s.kernel = kernel_of(r.word(disc["kernel"], "discretisation.kernel", {"wendland_c2", "quartic_spline", "cubic_spline"}));
+  if (disc["R_over_dx"]) {
+    s.R_over_dx = r.positive(disc["R_over_dx"], "discretisation.R_over_dx", "");
+    if (s.R_over_dx < 1.5 || s.R_over_dx > 6)
+      r.fail(disc["R_over_dx"], "discretisation.R_over_dx", "expected a value in [1.5, 6] (the thesis uses 2.5 to 4)");
+  }
+  if (disc["reorder_interval"])
+    s.reorder_interval = static_cast<int>(r.integer(disc["reorder_interval"], "discretisation.reorder_interval", 0, 1000000));
+  if (disc["neighbour_skin"]) s.neighbour_skin = r.non_negative(disc["neighbour_skin"], "discretisation.neighbour_skin", " (in dx)");
+  for (int k = 0; k < D; ++k)
+    if (s.periodic[k] && (s.domain.max[k] - s.domain.min[k]) < 2 * s.R())
+      r.fail(dom["max"], "domain.max", "a periodic axis must be at least 2 R = " + std::to_string(2 * s.R()) + " m long");
+
+  // fluid
+  const YAML::Node fl = r.required(root, "", "fluid");
+  r.only_keys(fl, "fluid", {"rho0", "sound_speed", "mach", "reference_velocity", "viscosity", "eos"});
+  s.rho0 = r.positive(r.required(fl, "fluid", "rho0"), "fluid.rho0", " (kg/m^3)");
+  if (fl["viscosity"]) s.nu = r.non_negative(fl["viscosity"], "fluid.viscosity", " (m^2/s)");
+  if (fl["mach"]) {
+    s.mach = r.positive(fl["mach"], "fluid.mach", "");
+    if (s.mach > 0.3) r.fail(fl["mach"], "fluid.mach", "expected a Mach number <= 0.3 (weak compressibility, thesis 2.33-2.35)");
+  }
+  if (const YAML::Node e = fl["eos"]) {
+    r.only_keys(e, "fluid.eos", {"law", "gamma", "background_pressure"});
+    s.eos = r.word(r.required(e, "fluid.eos", "law"), "fluid.eos.law", {"tait", "linear"}) == "tait" ? EosLaw::Tait : EosLaw::Linear;
+    if (e["gamma"]) s.tait_gamma = r.positive(e["gamma"], "fluid.eos.gamma", "");
+    if (e["background_pressure"]) s.eos_background_pressure = r.non_negative(e["background_pressure"], "fluid.eos.background_pressure", " (Pa)");
+  }
+
+  // fluid blocks
+  const YAML::Node blocks = r.required(root, "", "fluid_blocks");
+  if (!blocks.IsSequence() || blocks.size() == 0)
+    r.fail(blocks, "fluid_blocks", "expected a non-empty list of blocks (min, max, ...)");
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const std::string key = "fluid_blocks[" + std::to_string(i) + "]";
+    const YAML::Node b = blocks[i];
+    r.only_keys(b, key, {"min", "max", "velocity", "pressure"});
+    FluidBlock fb;
+    fb.box.min = r.vector(r.required(b, key, "min"), key + ".min", D, " (m)");
+    fb.box.max = r.vector(r.required(b, key, "max"), key + ".max", D, " (m)");
+    for (int k = 0; k < D; ++k) {
+      if (fb.box.min[k] < s.domain.min[k] - 1e-12 || fb.box.max[k] > s.domain.max[k] + 1e-12) {
+        r.fail(fb.box.min[k] < s.domain.min[k] - 1e-12 ? b["min"] : b["max"],
+               key + (fb.box.min[k] < s.domain.min[k] - 1e-12 ? ".min" : ".max"),
+               "the block lies outside the domain (domain.min/max)");
+      }
+      if (std::llround((fb.box.max[k] - fb.box.min[k]) / s.dx) < 1)
+        r.fail(b["max"], key + ".max", "empty fluid region: the block is thinner than one particle spacing dx = " + std::to_string(s.dx) + " m in axis " + std::to_string(k));
+    }
+    if (const YAML::Node v = b["velocity"]) {
+      if (v.IsMap()) {
+        r.only_keys(v, key + ".velocity", {"taylor_green"});
+        const YAML::Node tg = r.required(v, key + ".velocity", "taylor_green");
+        r.only_keys(tg, key + ".velocity.taylor_green", {"amplitude", "wavelength"});
+        if (D != 2) r.fail(v, key + ".velocity", "the Taylor-Green initial field is 2D only");
+        fb.velocity_kind = InitialVelocity::TaylorGreen;
+        fb.tg_amplitude = r.positive(r.required(tg, key + ".velocity.taylor_green", "amplitude"), key + ".velocity.taylor_green.amplitude", " (m/s)");
+        fb.tg_wavelength = r.positive(r.required(tg, key + ".velocity.taylor_green", "wavelength"), key + ".velocity.taylor_green.wavelength", " (m)");
+      } else {
+        fb.velocity = r.vector(v, key + ".velocity", D, " (m/s)");
+      }
+    }
+    if (const YAML::Node p = b["pressure"]) {
+      const std::string w = r.word(p, key + ".pressure", {"zero", "hydrostatic", "taylor_green"});
+      fb.pressure_kind = w == "hydrostatic" ? InitialPressure::Hydrostatic
+                         : w == "taylor_green" ? InitialPressure::TaylorGreen : InitialPressure::Zero;
+      if (fb.pressure_kind == InitialPressure::TaylorGreen && fb.velocity_kind != InitialVelocity::TaylorGreen)
+        r.fail(p, key + ".pressure", "taylor_green pressure needs a taylor_green velocity");
+    }
+    s.blocks.push_back(fb);
+  }
+
+  // forces
+  if (const YAML::Node f = root["forces"]) {
+    r.only_keys(f, "forces", {"gravity", "body_force"});
+    if (f["gravity"]) s.gravity = r.vector(f["gravity"], "forces.gravity", D, " (m/s^2)");
+    if (f["body_force"]) s.body_force = r.vector(f["body_force"], "forces.body_force", D, " (m/s^2)");
+  }
+
+  // scheme
+  if (const YAML::Node sc = root["scheme"]) {
+    r.only_keys(sc, "scheme", {"viscous_term", "delta_sph", "artificial_viscosity", "background_pressure",
+                               "time_integrator", "cfl"});
+    if (sc["viscous_term"]) {
+      const std::string w = r.word(sc["viscous_term"], "scheme.viscous_term", {"none", "morris", "monaghan_gingold"});
+      s.viscous_term = w == "morris" ? ViscousTerm::Morris : w == "monaghan_gingold" ? ViscousTerm::MonaghanGingold : ViscousTerm::None;
+    }
+    if (sc["delta_sph"]) {
+      s.delta_sph = r.non_negative(sc["delta_sph"], "scheme.delta_sph", "");
+      if (s.delta_sph >= 0.2) r.fail(sc["delta_sph"], "scheme.delta_sph", "expected 0 <= delta < 0.2 (stability bound of thesis 2.60)");
+    }
+    if (sc["artificial_viscosity"]) s.artificial_viscosity = r.non_negative(sc["artificial_viscosity"], "scheme.artificial_viscosity", " (alpha)");
+    if (sc["background_pressure"]) s.background_pressure = r.boolean(sc["background_pressure"], "scheme.background_pressure");
+    if (sc["time_integrator"])
+      s.integrator = r.word(sc["time_integrator"], "scheme.time_integrator", {"rk4", "predictor_corrector"}) == "rk4"
+                         ? TimeIntegrator::RK4 : TimeIntegrator::PredictorCorrector;
+    if (const YAML::Node c = sc["cfl"]) {
+      r.only_keys(c, "scheme.cfl", {"acoustic", "viscous", "force"});
+      if (c["acoustic"]) s.cfl_acoustic = r.positive(c["acoustic"], "scheme.cfl.acoustic", "");
+      if (c["viscous"]) s.cfl_viscous = r.positive(c["viscous"], "scheme.cfl.viscous", "");
+      if (c["force"]) s.cfl_force = r.positive(c["force"], "scheme.cfl.force", "");
+    }
+  }
+  if (s.viscous_term != ViscousTerm::None && !(s.nu > 0))
+    r.fail(fl, "fluid.viscosity", "scheme.viscous_term is set, so fluid.viscosity must be > 0");
+  if (s.viscous_term == ViscousTerm::None && s.nu > 0)
+    r.fail(fl["viscosity"], "fluid.viscosity", "is > 0 but scheme.viscous_term is none; choose morris or monaghan_gingold");
+
+  // sound speed: a number, or auto = reference_velocity / mach
+  double u_ref = -1;
+  if (const YAML::Node u = fl["reference_velocity"]) {
+    if (!(u.IsScalar() && u.Scalar() == "auto")) u_ref = r.positive(u, "fluid.reference_velocity", " (m/s) or auto");
+  }
+  if (u_ref < 0) {
+    // auto: the largest of the initial speeds and the free-fall speed sqrt(2 |g| H) over the fluid height
+    double g = 0, h = 0, u0 = 0;
+    for (int k = 0; k < D; ++k) g += (s.gravity[k] + s.body_force[k]) * (s.gravity[k] + s.body_force[k]);
+    g = std::sqrt(g);
+    for (const FluidBlock& b : s.blocks) {
+      // height of the block along gravity
+      double hb = 0;
+      for (int k = 0; k < D && g > 0; ++k) hb += std::abs(s.gravity[k] + s.body_force[k]) / g * (b.box.max[k] - b.box.min[k]);
+      h = std::max(h, hb);
+      double v2 = 0;
+      for (int k = 0; k < D; ++k) v2 += b.velocity[k] * b.velocity[k];
+      u0 = std::max({u0, std::sqrt(v2), b.tg_amplitude});
+    }
+    u_ref = std::max(u0, std::sqrt(2.0 * g * h));
+  }
+  s.reference_velocity = u_ref;
+  const YAML::Node cs = fl["sound_speed"];
+  if (cs && !(cs.IsScalar() && cs.Scalar() == "auto")) {
+    s.c0 = r.positive(cs, "fluid.sound_speed", " (m/s) or auto");
+  } else {
+    if (!(u_ref > 0))
+      r.fail(fl, "fluid.sound_speed", "is auto but the case has no velocity scale (no gravity, no initial velocity); give fluid.reference_velocity or a number");
+    s.c0 = u_ref / s.mach;
+  }
+
+  // time
+  const YAML::Node t = r.required(root, "", "time");
+  r.only_keys(t, "time", {"duration", "output_interval", "max_steps"});
+  s.duration = r.positive(r.required(t, "time", "duration"), "time.duration", " (s)");
+  s.output_interval = r.positive(r.required(t, "time", "output_interval"), "time.output_interval", " (s)");
+  if (t["max_steps"]) s.max_steps = r.integer(t["max_steps"], "time.max_steps", 1, 1LL << 50);
+
+  // probes
+  if (const YAML::Node pr = root["probes"]) {
+    if (!pr.IsSequence()) r.fail(pr, "probes", "expected a list of {name, position}");
+    for (std::size_t i = 0; i < pr.size(); ++i) {
+      const std::string key = "probes[" + std::to_string(i) + "]";
+      r.only_keys(pr[i], key, {"name", "position"});
+      Probe p;
+      p.name = r.required(pr[i], key, "name").as<std::string>();
+      p.position = r.vector(r.required(pr[i], key, "position"), key + ".position", D, " (m)");
+      for (int k = 0; k < D; ++k)
+        if (p.position[k] < s.domain.min[k] || p.position[k] > s.domain.max[k])
+          r.fail(pr[i]["position"], key + ".position", "the probe lies outside the domain");
+      s.probes.push_back(p);
+    }
+  }
+
+  // memory: refuse a particle count that cannot fit before anything is allocated
+  double n = 0;
+  for (const FluidBlock& b : s.blocks) {
+    double c = 1;
+    for (int k = 0; k < D; ++k) c *= std::round((b.box.max[k] - b.box.min[k]) / s.dx);
+    n += c;
+  }
+  const double mem = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  if (n * bytes_per_particle(D) > 0.8 * mem || n > 4e9) {
+    std::ostringstream m;
+    m.precision(3);
+    m << "the fluid blocks need " << n << " particles (about " << n * bytes_per_particle(D) / 1073741824.0
+      << " GiB), more than 80% of this machine's " << mem / 1073741824.0 << " GiB; expected a larger dx";
+    r.fail(disc["dx"], "discretisation.dx", m.str());
+  }
+  return s;
+}
+
+Scene load_case(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path);
+  if (!in) throw CaseError(path + ": cannot open the case file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parse_case(ss.str(), path, overrides);
+}
+
+std::string to_string(KernelType k) {
+  switch (k) {
+    case KernelType::WendlandC2: return "wendland_c2";
+    case KernelType::QuarticSpline: return "quartic_spline";
+    case KernelType::CubicSpline: return "cubic_spline";
+  }
+  return "?";
+}
+std::string to_string(EosLaw e) { return e == EosLaw::Tait ? "tait" : "linear"; }
+std::string to_string(ViscousTerm v) {
+  return v == ViscousTerm::Morris ? "morris" : v == ViscousTerm::MonaghanGingold ? "monaghan_gingold" : "none";
+}
+std::string to_string(TimeIntegrator t) { return t == TimeIntegrator::RK4 ? "rk4" : "predictor_corrector"; }
+
+}  // namespace ondine

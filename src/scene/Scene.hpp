@@ -1,0 +1,91 @@
+#pragma once
+// A parsed, validated case file. Vectors are stored with 3 components; only the
+// first `dimension` are meaningful. Units are SI throughout.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace ondine {
+
+using Vec3 = std::array<double, 3>;
+
+enum class KernelType { WendlandC2, QuarticSpline, CubicSpline };
+enum class EosLaw { Tait, Linear };
+enum class ViscousTerm { None, Morris, MonaghanGingold };
+enum class TimeIntegrator { RK4, PredictorCorrector };
+enum class InitialVelocity { Uniform, TaylorGreen };
+enum class InitialPressure { Zero, Hydrostatic, TaylorGreen };
+
+struct Box {
+  Vec3 min{0, 0, 0}, max{0, 0, 0};
+};
+
+struct FluidBlock {
+  Box box;
+  InitialVelocity velocity_kind = InitialVelocity::Uniform;
+  Vec3 velocity{0, 0, 0};       // uniform velocity, m/s
+  double tg_amplitude = 0.0;    // Taylor-Green U, m/s
+  double tg_wavelength = 0.0;   // Taylor-Green L, m
+  InitialPressure pressure_kind = InitialPressure::Zero;
+};
+
+struct Probe {
+  std::string name;
+  Vec3 position{0, 0, 0};
+};
+
+struct Scene {
+  std::string name;         // case name (output folder name)
+  std::string source_file;  // the YAML file it came from
+  int dimension = 2;
+
+  Box domain;
+  std::array<bool, 3> periodic{false, false, false};
+
+  // fluid
+  double rho0 = 1000.0;         // kg/m^3
+  double c0 = 0.0;              // m/s (resolved: never 'auto' after parsing)
+  double mach = 0.1;            // used when sound_speed is auto
+  double reference_velocity = 0.0;  // m/s, resolved
+  double nu = 0.0;              // kinematic viscosity, m^2/s
+  EosLaw eos = EosLaw::Tait;
+  double tait_gamma = 7.0;
+  double eos_background_pressure = 0.0;  // Pa, added to the law (flows without free surface)
+
+  // discretisation
+  KernelType kernel = KernelType::WendlandC2;
+  double R_over_dx = 3.0;
+  double dx = 0.0;  // m
+  double R() const { return R_over_dx * dx; }
+
+  std::vector<FluidBlock> blocks;
+
+  Vec3 gravity{0, 0, 0};     // m/s^2
+  Vec3 body_force{0, 0, 0};  // m/s^2 (force per unit mass)
+
+  // scheme
+  ViscousTerm viscous_term = ViscousTerm::None;
+  double delta_sph = 0.0;             // 0 = no delta-SPH term (2.60)
+  double artificial_viscosity = 0.0;  // alpha of (2.58); 0 = off
+  bool background_pressure = false;   // tensile correction (2.105)
+  TimeIntegrator integrator = TimeIntegrator::RK4;
+  double cfl_acoustic = 0.375;  // (2.102)
+  double cfl_viscous = 0.12;    // (2.103)
+  double cfl_force = 0.25;      // [V&I 11]
+  int reorder_interval = 50;    // steps between particle reorderings by cell
+  double neighbour_skin = 0.0;  // multiple of dx (0: cell traversal, no list)
+
+  // time and output
+  double duration = 0.0;         // s
+  double output_interval = 0.0;  // s
+  std::int64_t max_steps = -1;   // -1: no limit
+  std::vector<Probe> probes;
+};
+
+std::string to_string(KernelType);
+std::string to_string(EosLaw);
+std::string to_string(ViscousTerm);
+std::string to_string(TimeIntegrator);
+
+}  // namespace ondine

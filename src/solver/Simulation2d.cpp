@@ -1,0 +1,4 @@
+#include "solver/SimulationImpl.hpp"
+namespace ondine {
+template class Simulation<2>;
+}

@@ -1,0 +1,127 @@
+// Case-file parsing: a good file, and each kind of bad input with the message
+// that names the file, the line and the key.
+#include <catch2/catch.hpp>
+
+#include "scene/CaseFile.hpp"
+
+using namespace ondine;
+using Catch::Matchers::Contains;
+
+namespace {
+
+const std::string good = R"(name: box
+dimension: 2
+domain:
+  min: [0.0, 0.0]
+  max: [1.0, 1.0]
+  periodic: [true, true]
+fluid:
+  rho0: 1000.0
+  sound_speed: auto
+  mach: 0.1
+  viscosity: 1.0e-3
+discretisation:
+  dx: 0.02
+  kernel: wendland_c2
+  R_over_dx: 3.0
+fluid_blocks:
+  - min: [0.0, 0.0]
+    max: [1.0, 0.5]
+    velocity: [0.5, 0.0]
+forces:
+  gravity: [0.0, -9.81]
+scheme:
+  viscous_term: morris
+  delta_sph: 0.1
+time:
+  duration: 0.5
+  output_interval: 0.1
+)";
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+  const auto p = s.find(from);
+  REQUIRE(p != std::string::npos);
+  return s.replace(p, from.size(), to);
+}
+
+std::string error_of(const std::string& text, const std::vector<std::string>& sets = {}) {
+  try {
+    parse_case(text, "cases/box.yaml", sets);
+  } catch (const CaseError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("A good case file parses into the scene it describes", "[unit][case]") {
+  const Scene s = parse_case(good, "cases/box.yaml");
+  CHECK(s.name == "box");
+  CHECK(s.dimension == 2);
+  CHECK(s.periodic[0]);
+  CHECK(s.dx == 0.02);
+  CHECK(s.R() == Approx(0.06));
+  CHECK(s.viscous_term == ViscousTerm::Morris);
+  CHECK(s.delta_sph == 0.1);
+  CHECK(s.blocks.size() == 1);
+  CHECK(count_particles(s) == 50 * 25);
+  // auto sound speed: u_ref = max(|u0|, sqrt(2 g H)) with H the block height, c0 = u_ref / Ma
+  CHECK(s.c0 == Approx(std::sqrt(2 * 9.81 * 0.5) / 0.1));
+}
+
+TEST_CASE("Command-line overrides change a key, and a bad override is named", "[unit][case]") {
+  const Scene s = parse_case(good, "cases/box.yaml", {"discretisation.dx=0.01", "fluid_blocks.0.velocity=[0, 1]"});
+  CHECK(s.dx == 0.01);
+  CHECK(s.blocks[0].velocity[1] == 1.0);
+  CHECK_THAT(error_of(good, {"discretisation.dx=-1"}), Contains("--set discretisation.dx") && Contains("positive"));
+  CHECK_THAT(error_of(good, {"nonsense"}), Contains("expected key=value"));
+  CHECK_THAT(error_of(good, {"fluid.colour=blue"}), Contains("fluid.colour") && Contains("unknown key"));
+}
+
+TEST_CASE("Bad case files get a message naming file, line and key", "[unit][case]") {
+  SECTION("unknown key") {
+    const auto m = error_of(replace(good, "  mach: 0.1", "  mach: 0.1\n  rho_zero: 3"));
+    CHECK_THAT(m, Contains("cases/box.yaml:11:") && Contains("fluid.rho_zero") && Contains("unknown key"));
+  }
+  SECTION("wrong type") {
+    const auto m = error_of(replace(good, "rho0: 1000.0", "rho0: heavy"));
+    CHECK_THAT(m, Contains("cases/box.yaml:8:") && Contains("fluid.rho0") && Contains("'heavy'"));
+    const auto m2 = error_of(replace(good, "max: [1.0, 1.0]", "max: [1.0, 1.0, 1.0]"));
+    CHECK_THAT(m2, Contains("cases/box.yaml:5:") && Contains("domain.max") && Contains("2 numbers"));
+  }
+  SECTION("missing required key") {
+    const auto m = error_of(replace(good, "  duration: 0.5\n", ""));
+    CHECK_THAT(m, Contains("cases/box.yaml:") && Contains("time.duration") && Contains("missing"));
+  }
+  SECTION("negative spacing") {
+    const auto m = error_of(replace(good, "dx: 0.02", "dx: -0.02"));
+    CHECK_THAT(m, Contains("cases/box.yaml:13:") && Contains("discretisation.dx") && Contains("positive"));
+  }
+  SECTION("empty fluid region") {
+    const auto m = error_of(replace(good, "max: [1.0, 0.5]", "max: [1.0, 0.005]"));
+    CHECK_THAT(m, Contains("cases/box.yaml:18:") && Contains("fluid_blocks[0].max") && Contains("empty fluid region"));
+    const auto m2 = error_of(replace(good, "fluid_blocks:\n  - min: [0.0, 0.0]\n    max: [1.0, 0.5]\n    velocity: [0.5, 0.0]", "fluid_blocks: []"));
+    CHECK_THAT(m2, Contains("fluid_blocks") && Contains("non-empty"));
+  }
+  SECTION("box outside the domain") {
+    const auto m = error_of(replace(good, "max: [1.0, 0.5]", "max: [1.5, 0.5]"));
+    CHECK_THAT(m, Contains("cases/box.yaml:18:") && Contains("fluid_blocks[0].max") && Contains("outside the domain"));
+  }
+  SECTION("a particle count that cannot fit in memory") {
+    const auto m = error_of(replace(good, "dx: 0.02", "dx: 1.0e-7"));
+    CHECK_THAT(m, Contains("cases/box.yaml:13:") && Contains("discretisation.dx") && Contains("GiB"));
+  }
+  SECTION("a bad choice among options") {
+    const auto m = error_of(replace(good, "kernel: wendland_c2", "kernel: gaussian"));
+    CHECK_THAT(m, Contains("cases/box.yaml:14:") && Contains("discretisation.kernel") && Contains("wendland_c2 | quartic_spline | cubic_spline"));
+  }
+  SECTION("inconsistent physics") {
+    const auto m = error_of(replace(good, "viscous_term: morris", "viscous_term: none"));
+    CHECK_THAT(m, Contains("fluid.viscosity") && Contains("viscous_term"));
+  }
+  SECTION("not YAML at all") {
+    const auto m = error_of("dimension: [2\n");
+    CHECK_THAT(m, Contains("cases/box.yaml:") && Contains("not valid YAML"));
+  }
+}
