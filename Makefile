@@ -8,7 +8,15 @@ KOKKOS   ?= $(if $(ONDINE_KOKKOS_ROOT),$(ONDINE_KOKKOS_ROOT),$(CURDIR)/.deps/kok
 export OMP_PROC_BIND ?= spread
 export OMP_PLACES    ?= threads
 
-.PHONY: all setup configure build run test clean
+.PHONY: all setup configure build run test clean cuda setup-cuda
+
+# `make cuda`: the CUDA build (compiled, not run, where there is no GPU). Kokkos 3.4.1
+# with CUDA goes to .deps/kokkos-cuda (scripts/setup-kokkos-cuda.sh), Ondine to
+# $(BUILD_CUDA) with Kokkos' nvcc_wrapper as its C++ compiler. No nvcc: nothing to do.
+BUILD_CUDA  ?= build-cuda
+CUDA_ROOT   ?= $(if $(ONDINE_CUDA_ROOT),$(ONDINE_CUDA_ROOT),/usr/local/cuda)
+KOKKOS_CUDA ?= $(CURDIR)/.deps/kokkos-cuda
+CUDA_CMAKE_ARGS ?=
 
 all: build
 
@@ -28,6 +36,23 @@ run: build
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j 1
+
+ifneq ($(wildcard $(CUDA_ROOT)/bin/nvcc),)
+cuda setup-cuda $(BUILD_CUDA)/CMakeCache.txt: export PATH := $(CUDA_ROOT)/bin:$(PATH)
+
+setup-cuda: setup
+	@ONDINE_CUDA_ROOT="$(CUDA_ROOT)" scripts/setup-kokkos-cuda.sh
+
+$(BUILD_CUDA)/CMakeCache.txt: | setup-cuda
+	cmake -S . -B $(BUILD_CUDA) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER="$(KOKKOS_CUDA)/bin/nvcc_wrapper" \
+	  -DCMAKE_PREFIX_PATH="$(KOKKOS_CUDA)" $(CUDA_CMAKE_ARGS)
+
+cuda: setup-cuda $(BUILD_CUDA)/CMakeCache.txt
+	cmake --build $(BUILD_CUDA) -j $(JOBS)
+else
+setup-cuda cuda:
+	@echo "make $@: no nvcc at $(CUDA_ROOT)/bin/nvcc (set CUDA_ROOT); skipped"
+endif
 
 clean:
 	rm -rf $(BUILD) out

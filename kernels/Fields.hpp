@@ -28,6 +28,10 @@ ONDINE_FIELD(Acceleration, "acceleration", double, true);  // du/dt
 ONDINE_FIELD(DensityRate, "density_rate", double, false);  // drho/dt
 // Renormalised density gradient, thesis (2.42)-(2.44), read by the delta-SPH term (2.63).
 ONDINE_FIELD(DensityGradient, "density_gradient", double, true);
+// Shepard factor gamma_i of the NFM walls (thesis 4.17, 4.52): 1 away from walls.
+ONDINE_FIELD(ShepardGamma, "shepard_gamma", double, false);
+// Free-surface flag from the NFM renormalisation matrix and normal (4.86)-(4.87): 1 on the surface.
+ONDINE_FIELD(FreeSurface, "free_surface", double, false);
 #undef ONDINE_FIELD
 }  // namespace field
 

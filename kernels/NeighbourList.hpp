@@ -31,6 +31,19 @@ struct CutoffVisitor {
   }
 };
 
+// Verlet criterion of the skin: max_i |x_i - x_i(at the last build)|^2 (minimum
+// image); the list is rebuilt once it reaches (skin/2)^2. With Kokkos::Max.
+template <int D>
+struct MaxDisplacement2 {
+  using value_type = double;
+  PeriodicBox<D> box;
+  field_view_t<field::Position, D> x, x_build;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, double& mx) const {
+    const double d2 = norm2(box.delta(load<D>(x, i), load<D>(x_build, i)));
+    if (d2 > mx) mx = d2;
+  }
+};
+
 template <int D>
 struct NeighbourList {
   Kokkos::View<int*, MemSpace> offsets;     // n + 1

@@ -1,6 +1,7 @@
 #pragma once
-// Gathers a field into a new order: out(i) = in(perm(i)). Used to reorder
-// particles by cell for memory locality.
+// Gathers a field into a new order: out(i) = in(perm(i)), i < perm.extent(0).
+// Used to reorder particles by cell for memory locality, and to drop particles
+// (a shorter perm).
 #include <string>
 
 #include "kernels/Fields.hpp"
@@ -9,8 +10,8 @@ namespace ondine {
 
 template <class V>
 V permuted(const V& in, const Kokkos::View<int*, MemSpace>& perm) {
-  V out(in.label(), in.extent(0));
-  const int n = static_cast<int>(in.extent(0));
+  const int n = static_cast<int>(perm.extent(0));
+  V out(in.label(), n);
   if constexpr (V::rank == 1) {
     Kokkos::parallel_for("ondine::Reorder::gather", Kokkos::RangePolicy<ExecSpace>(0, n),
                          KOKKOS_LAMBDA(const int i) { out(i) = in(perm(i)); });

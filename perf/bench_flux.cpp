@@ -11,6 +11,8 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <map>
+#include <sstream>
 #include <random>
 #include <string>
 #include <vector>
@@ -23,13 +25,59 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
+// Kokkos tool callbacks: wall time spent in neighbour-search kernels, and the
+// bytes held by Views other than the neighbour list. Kernels on the OpenMP
+// backend are synchronous, so begin/end timing is the kernel's time.
+struct Instrument {
+  static inline double search_seconds = 0;
+  static inline Clock::time_point began;
+  static inline bool in_search = false;
+  static inline std::map<const void*, std::pair<std::string, uint64_t>> live;
+  static bool is_search(const char* name) {
+    const std::string s(name);
+    return s.rfind("ondine::CellList", 0) == 0 || s.rfind("ondine::NeighbourList", 0) == 0;
+  }
+  static void begin(const char* name, const uint32_t, uint64_t* id) {
+    *id = 0;
+    in_search = is_search(name);
+    if (in_search) began = Clock::now();
+  }
+  static void end(const uint64_t) {
+    if (in_search) search_seconds += std::chrono::duration<double>(Clock::now() - began).count();
+    in_search = false;
+  }
+  static void alloc(const Kokkos::Tools::SpaceHandle, const char* label, const void* ptr, const uint64_t size) {
+    live[ptr] = {label, size};
+  }
+  static void dealloc(const Kokkos::Tools::SpaceHandle, const char*, const void* ptr, const uint64_t) { live.erase(ptr); }
+  static double bytes_excluding_neighbour_list() {
+    double b = 0;
+    for (const auto& [ptr, v] : live)
+      if (v.first.find("NeighbourList") == std::string::npos) b += static_cast<double>(v.second);
+    return b;
+  }
+  static void install() {
+    namespace KT = Kokkos::Tools::Experimental;
+    KT::set_begin_parallel_for_callback(begin);
+    KT::set_begin_parallel_reduce_callback(begin);
+    KT::set_begin_parallel_scan_callback(begin);
+    KT::set_end_parallel_for_callback(end);
+    KT::set_end_parallel_reduce_callback(end);
+    KT::set_end_parallel_scan_callback(end);
+    KT::set_allocate_data_callback(alloc);
+    KT::set_deallocate_data_callback(dealloc);
+  }
+};
+
 std::string box_yaml(int D, int per_side, double R_over_dx, const std::string& scheme, double skin) {
-  const double dx = 1.0 / per_side;
+  std::ostringstream dx;
+  dx.precision(17);
+  dx << 1.0 / per_side;
   const std::string lo = D == 2 ? "[0, 0]" : "[0, 0, 0]", hi = D == 2 ? "[1, 1]" : "[1, 1, 1]";
   const std::string per = D == 2 ? "[true, true]" : "[true, true, true]";
   return "dimension: " + std::to_string(D) + "\ndomain: {min: " + lo + ", max: " + hi + ", periodic: " + per +
          "}\nfluid: {rho0: 1000, sound_speed: 10" +
-         (scheme.find("viscous_term") != std::string::npos ? ", viscosity: 1.0e-3" : "") + "}\ndiscretisation: {dx: " + std::to_string(dx) +
+         (scheme.find("viscous_term") != std::string::npos ? ", viscosity: 1.0e-3" : "") + "}\ndiscretisation: {dx: " + dx.str() +
          ", R_over_dx: " + std::to_string(R_over_dx) + ", neighbour_skin: " + std::to_string(skin) +
          "}\nfluid_blocks: [{min: " + lo + ", max: " + hi + "}]\nscheme: " + scheme +
          "\ntime: {duration: 1, output_interval: 1}\n";
@@ -61,52 +109,78 @@ double median(std::vector<double> v) {
 template <int D>
 nlohmann::json measure(const std::string& name, int per_side, double R_over_dx, const std::string& scheme, int reps,
                        int evals, int steps) {
-  // evaluations with a fixed list (a tiny skin: nothing moves, so nothing is rebuilt)
-  Simulation<D> sim(parse_case(box_yaml(D, per_side, R_over_dx, scheme, 0.01), name + ".yaml"));
-  perturb(sim);
-  sim.evaluate();
-  const double pairs = static_cast<double>(sim.pair_count());
-  std::vector<double> t_eval;
-  for (int r = 0; r < reps; ++r) {
-    Kokkos::fence();
-    const auto t0 = Clock::now();
-    for (int e = 0; e < evals; ++e) sim.evaluate();
-    Kokkos::fence();
-    t_eval.push_back(std::chrono::duration<double>(Clock::now() - t0).count() / evals);
-  }
-  const double n = static_cast<double>(sim.size());
   nlohmann::json j;
   j["case"] = name;
   j["dimension"] = D;
-  j["particles"] = sim.size();
   j["R_over_dx"] = R_over_dx;
   j["scheme"] = scheme;
-  j["neighbours_per_particle"] = pairs / n;
-  j["evaluation_seconds_median"] = median(t_eval);
-  j["pair_interactions_per_second"] = pairs / median(t_eval);
-  j["particle_evaluations_per_second"] = n / median(t_eval);
-  // full time steps (RK4 = 4 evaluations), two neighbour strategies
-  for (double skin : {0.0, 0.3}) {
-    Simulation<D> s2(parse_case(box_yaml(D, per_side, R_over_dx, scheme, skin), name + ".yaml"));
-    perturb(s2);
-    s2.step(1.0);
-    std::vector<double> t_step;
+  j["backend"] = Kokkos::DefaultExecutionSpace::name();
+  j["threads"] = Kokkos::DefaultExecutionSpace().concurrency();
+  double n = 0, pairs = 0;
+  {
+    // force evaluations on a fixed list (a tiny skin: nothing moves, nothing is rebuilt)
+    Simulation<D> sim(parse_case(box_yaml(D, per_side, R_over_dx, scheme, 0.01), name + ".yaml"));
+    perturb(sim);
+    sim.evaluate();
+    n = static_cast<double>(sim.size());
+    pairs = static_cast<double>(sim.pair_count());
+    std::vector<double> t_eval;
     for (int r = 0; r < reps; ++r) {
       Kokkos::fence();
       const auto t0 = Clock::now();
-      for (int s = 0; s < steps; ++s) s2.step(1.0);
+      for (int e = 0; e < evals; ++e) sim.evaluate();
       Kokkos::fence();
-      t_step.push_back(std::chrono::duration<double>(Clock::now() - t0).count() / steps);
+      t_eval.push_back(std::chrono::duration<double>(Clock::now() - t0).count() / evals);
+    }
+    j["particles"] = sim.size();
+    j["neighbours_per_particle"] = pairs / n;
+    j["evaluation_seconds_median"] = median(t_eval);
+    j["pair_interactions_per_second"] = pairs / median(t_eval);
+  }
+  // full time steps (RK4: 4 evaluations per step) with the two neighbour strategies
+  for (double skin : {0.0, 0.3}) {
+    Instrument::live.clear();
+    Simulation<D> s2(parse_case(box_yaml(D, per_side, R_over_dx, scheme, skin), name + ".yaml"));
+    perturb(s2);
+    s2.step(1.0);
+    const double bytes = Instrument::bytes_excluding_neighbour_list() / n;
+    std::vector<double> t_step, f_search;
+    double wall = 0;
+    for (int r = 0; r < reps; ++r) {
+      Kokkos::fence();
+      Instrument::search_seconds = 0;
+      const auto t0 = Clock::now();
+      for (int st = 0; st < steps; ++st) s2.step(1.0);
+      Kokkos::fence();
+      const double t = std::chrono::duration<double>(Clock::now() - t0).count();
+      wall += t;
+      t_step.push_back(t / steps);
+      f_search.push_back(Instrument::search_seconds / t);
     }
     const std::string key = skin == 0 ? "rebuild_every_evaluation" : "verlet_skin_0.3dx";
-    j["steps"][key] = {{"step_seconds_median", median(t_step)},
-                       {"particle_steps_per_second", n / median(t_step)},
-                       {"neighbour_builds", s2.neighbour_builds()},
-                       {"steps_taken", s2.steps()}};
+    j["strategies"][key] = {{"steps", steps * reps},
+                            {"wall_seconds", wall},
+                            {"step_seconds_median", median(t_step)},
+                            {"particle_steps_per_second", n / median(t_step)},
+                            {"neighbour_search_fraction_median", median(f_search)},
+                            {"neighbour_builds", s2.neighbour_builds()},
+                            {"bytes_per_particle", bytes}};
   }
-  std::fprintf(stderr, "%-28s N=%8.0f nb=%5.1f  eval %.4f s  %.3g pairs/s  %.3g particle-steps/s (skin 0.3dx)\n",
-               name.c_str(), n, pairs / n, median(t_eval), pairs / median(t_eval),
-               j["steps"]["verlet_skin_0.3dx"]["particle_steps_per_second"].get<double>());
+  // headline figures: the default strategy (Verlet skin 0.3 dx)
+  const auto& d = j["strategies"]["verlet_skin_0.3dx"];
+  j["steps"] = d["steps"];
+  j["wall_seconds"] = d["wall_seconds"];
+  j["particle_steps_per_second"] = d["particle_steps_per_second"];
+  j["bytes_per_particle"] = d["bytes_per_particle"];
+  j["neighbour_search_fraction"] = d["neighbour_search_fraction_median"];
+  std::fprintf(stderr, "%-24s N=%8.0f nb=%5.1f  eval %.4f s  %.3g pairs/s  %.3g particle-steps/s  %.0f B/particle  search %.0f%% (rebuild-every-eval: %.3g p-steps/s, search %.0f%%)\n",
+               name.c_str(), n, pairs / n, j["evaluation_seconds_median"].get<double>(),
+               j["pair_interactions_per_second"].get<double>(), d["particle_steps_per_second"].get<double>(),
+               d["bytes_per_particle"].get<double>(), 100 * d["neighbour_search_fraction_median"].get<double>(),
+               j["strategies"]["rebuild_every_evaluation"]["particle_steps_per_second"].get<double>(),
+               100 * j["strategies"]["rebuild_every_evaluation"]["neighbour_search_fraction_median"].get<double>());
+  std::printf("%s\n", j.dump().c_str());
+  std::fflush(stdout);
   return j;
 }
 
@@ -123,27 +197,40 @@ int main(int argc, char** argv) {
       if (s == "--quick") quick = true;
       else if (s == "--out" && a + 1 < argc) out = argv[++a];
     }
-    const int reps = quick ? 3 : 5, evals = quick ? 3 : 10, steps = quick ? 2 : 5;
+    Instrument::install();
+    const int reps = quick ? 2 : 3, evals = quick ? 3 : 5, steps = quick ? 2 : 3;
     const std::string minimal = "{time_integrator: rk4}";
     const std::string full = "{viscous_term: morris, delta_sph: 0.1, artificial_viscosity: 0.02, background_pressure: true}";
     const std::string pairbench = "{viscous_term: morris, delta_sph: 0.1}";
-    const int s2 = quick ? 100 : 316, s3 = quick ? 22 : 46, spb = quick ? 100 : 300;
-    nlohmann::json j;
-    j["backend"] = Kokkos::DefaultExecutionSpace::name();
-    j["threads"] = Kokkos::DefaultExecutionSpace().concurrency();
-    j["runs"].push_back(measure<2>("minimal_2d", s2, 3.0, minimal, reps, evals, steps));
-    j["runs"].push_back(measure<2>("full_2d", s2, 3.0, full, reps, evals, steps));
-    j["runs"].push_back(measure<2>("pairbench_like_2d_R4dx", spb, 4.0, pairbench, reps, evals, steps));
-    j["runs"].push_back(measure<3>("minimal_3d", s3, 3.0, minimal, reps, evals, steps));
-    j["runs"].push_back(measure<3>("full_3d", s3, 3.0, full, reps, evals, steps));
-    const auto& r = j["runs"];
-    j["ratios"]["full_over_minimal_evaluation_time_2d"] =
-        r[1]["evaluation_seconds_median"].get<double>() / r[0]["evaluation_seconds_median"].get<double>();
-    j["ratios"]["full_over_minimal_evaluation_time_3d"] =
-        r[4]["evaluation_seconds_median"].get<double>() / r[3]["evaluation_seconds_median"].get<double>();
-    const std::string text = j.dump(2) + "\n";
-    if (out.empty()) std::printf("%s", text.c_str());
-    else std::ofstream(out) << text;
+    nlohmann::json all;
+    all["backend"] = Kokkos::DefaultExecutionSpace::name();
+    all["threads"] = Kokkos::DefaultExecutionSpace().concurrency();
+    auto& runs = all["runs"];
+    // the yardstick configuration of shared/perf/pairbench.cpp: R = 4 dx, delta-SPH + Morris, 300^2
+    runs.push_back(measure<2>("pairbench_like_2d", quick ? 100 : 300, 4.0, pairbench, reps, evals, steps));
+    const std::vector<int> sides2 = quick ? std::vector<int>{100} : std::vector<int>{100, 316, 1000};
+    const std::vector<int> sides3 = quick ? std::vector<int>{22} : std::vector<int>{22, 46, 79};
+    for (int s2 : sides2) {
+      runs.push_back(measure<2>("minimal_2d", s2, 3.0, minimal, reps, evals, steps));
+      runs.push_back(measure<2>("full_2d", s2, 3.0, full, reps, evals, steps));
+    }
+    for (int s3 : sides3) {
+      runs.push_back(measure<3>("minimal_3d", s3, 3.0, minimal, reps, evals, steps));
+      runs.push_back(measure<3>("full_3d", s3, 3.0, full, reps, evals, steps));
+    }
+    // minimal against full at the same size (the last pair of each dimension)
+    auto ratio = [&](int D) {
+      double tmin = 0, tfull = 0;
+      for (const auto& r : runs) {
+        if (r["dimension"] != D) continue;
+        if (r["case"].get<std::string>().rfind("minimal", 0) == 0) tmin = r["evaluation_seconds_median"];
+        if (r["case"].get<std::string>().rfind("full", 0) == 0) tfull = r["evaluation_seconds_median"];
+      }
+      return tfull / tmin;
+    };
+    all["ratios"]["full_over_minimal_evaluation_time_2d"] = ratio(2);
+    all["ratios"]["full_over_minimal_evaluation_time_3d"] = ratio(3);
+    if (!out.empty()) std::ofstream(out) << all.dump(2) << "\n";
   }
   Kokkos::finalize();
   MPI_Finalize();

@@ -48,27 +48,9 @@ if [ -f "$stamp" ]; then
   log "Kokkos (OpenMP) cached in $prefix"; exit 0
 fi
 
-src="$deps/src"
-mkdir -p "$src"
-kokkos_src=$(ls -d "$src"/trilinos-*/packages/kokkos 2>/dev/null | head -n1 || true)
-if [ -z "$kokkos_src" ]; then
-  if ! ls "$src"/trilinos_*.orig.tar.* >/dev/null 2>&1; then
-    # Debian's Kokkos binary package is Serial-only; the source package carries Kokkos 3.4.1.
-    list=/etc/apt/sources.list.d/ondine-deb-src.sources
-    if ! grep -rqs '^Types:.*deb-src' /etc/apt/sources.list.d/ && ! grep -qs '^deb-src' /etc/apt/sources.list; then
-      log "adding a deb-src entry ($list)"
-      printf 'Types: deb-src\nURIs: http://deb.debian.org/debian\nSuites: bookworm bookworm-updates\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' \
-        | as_root tee "$list" >/dev/null
-      as_root apt-get update -qq
-    fi
-    log "downloading Debian's trilinos source package"
-    (cd "$src" && apt-get source --download-only -qq trilinos)
-  fi
-  tarball=$(ls "$src"/trilinos_*.orig.tar.* | head -n1)
-  log "extracting packages/kokkos from $(basename "$tarball")"
-  tar -xf "$tarball" -C "$src" --wildcards '*/packages/kokkos/*'
-  kokkos_src=$(ls -d "$src"/*/packages/kokkos | head -n1)
-fi
+# shellcheck source=lib/kokkos-source.sh
+. "$root/scripts/lib/kokkos-source.sh"
+kokkos_src=$(kokkos_source "$deps")
 
 log "building Kokkos (OpenMP + Serial) from $kokkos_src"
 rm -rf "$deps/kokkos-build"

@@ -19,7 +19,7 @@ class ParticleSet {
  public:
   using Fields = std::tuple<field::Position, field::Velocity, field::Density, field::Pressure,
                             field::Mass, field::GlobalId, field::Acceleration, field::DensityRate,
-                            field::DensityGradient>;
+                            field::DensityGradient, field::ShepardGamma, field::FreeSurface>;
   static constexpr int dimension = D;
 
   explicit ParticleSet(std::size_t n = 0) : n_(n) {}
@@ -55,7 +55,13 @@ class ParticleSet {
     });
   }
 
-  // Replaces every allocated field v by f(v) (same type and size), e.g. a reordering.
+  // Replaces every allocated field v by f(v) (same type), e.g. a reordering or
+  // a compaction to `new_size` particles.
+  template <class F>
+  void permute(F&& f, std::size_t new_size) {
+    n_ = new_size;
+    permute(std::forward<F>(f));
+  }
   template <class F>
   void permute(F&& f) {
     for_each_view([&f](auto, auto& v) {

@@ -135,6 +135,11 @@ class Reader {
     return v;
   }
 
+  std::string text(const YAML::Node& n, const std::string& key, const std::string& expect) const {
+    if (!n.IsScalar() || n.Scalar().empty()) fail(n, key, "expected " + expect + ", got " + shown(n));
+    return n.Scalar();
+  }
+
   const std::string& file() const { return file_; }
 
  private:
@@ -168,13 +173,17 @@ std::set<std::string> apply_overrides(YAML::Node& root, const std::vector<std::s
         if (k >= cur.size()) throw CaseError("--set " + key + ": list index " + parts[i] + " is out of range");
         chain.push_back(cur[k]);
       } else {
-        if (!cur.IsMap() && cur.IsDefined() && !cur.IsNull())
-          throw CaseError("--set " + key + ": '" + parts[i] + "' is not a mapping");
+        if (cur.IsScalar() || cur.IsSequence())
+          throw CaseError("--set " + key + ": '" + (i == 0 ? std::string("(top level)") : parts[i - 1]) +
+                          "' is not a mapping");
         chain.push_back(cur[parts[i]]);
       }
     }
     YAML::Node parent = chain.back();
     const std::string& last = parts.back();
+    if (parent.IsScalar())
+      throw CaseError("--set " + key + ": '" + (parts.size() > 1 ? parts[parts.size() - 2] : std::string("(top level)")) +
+                      "' is not a mapping");
     if (parent.IsSequence() && last.find_first_not_of("0123456789") == std::string::npos) {
       const std::size_t k = std::stoul(last);
       if (k >= parent.size()) throw CaseError("--set " + key + ": list index " + last + " is out of range");
@@ -185,6 +194,12 @@ std::set<std::string> apply_overrides(YAML::Node& root, const std::vector<std::s
     keys.insert(key);
   }
   return keys;
+}
+
+std::string fmt(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
 }
 
 KernelType kernel_of(const std::string& s) {
@@ -221,13 +236,13 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
   if (!root.IsMap()) throw CaseError(path + ": expected a YAML mapping at the top level (see docs/case-file.md)");
   const Reader r(path, apply_overrides(root, overrides));
 
-  r.only_keys(root, "", {"name", "dimension", "domain", "fluid", "discretisation", "fluid_blocks", "forces",
-                         "scheme", "time", "probes"});
+  r.only_keys(root, "", {"name", "dimension", "domain", "fluid", "discretisation", "fluid_blocks", "walls", "forces",
+                         "scheme", "time", "probes", "reference"});
   Scene s;
   s.source_file = path;
   if (root["name"]) {
-    s.name = root["name"].as<std::string>();
-    if (s.name.empty() || s.name.find_first_of("/\\ ") != std::string::npos)
+    s.name = r.text(root["name"], "name", "a case name");
+    if (s.name.find_first_of("/\\ ") != std::string::npos)
       r.fail(root["name"], "name", "expected a name without spaces or slashes");
   } else {
     const auto slash = path.find_last_of('/');
@@ -249,7 +264,8 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
 
   // discretisation
   const YAML::Node disc = r.required(root, "", "discretisation");
-  r.only_keys(disc, "discretisation", {"dx", "kernel", "R_over_dx", "reorder_interval", "neighbour_skin"});
+  r.only_keys(disc, "discretisation", {"dx", "kernel", "R_over_dx", "reorder_interval", "neighbour_skin",
+                                       "wall_quadrature_spacing"});
   s.dx = r.positive(r.required(disc, "discretisation", "dx"), "discretisation.dx", " (m)");
   if (disc["kernel"])
     s.kernel = kernel_of(r.word(disc["kernel"], "discretisation.kernel", {"wendland_c2", "quartic_spline", "cubic_spline"}));
@@ -260,10 +276,19 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
   }
   if (disc["reorder_interval"])
     s.reorder_interval = static_cast<int>(r.integer(disc["reorder_interval"], "discretisation.reorder_interval", 0, 1000000));
+  if (disc["wall_quadrature_spacing"])
+    s.wall_quadrature_spacing = r.positive(disc["wall_quadrature_spacing"], "discretisation.wall_quadrature_spacing", " (m)");
   if (disc["neighbour_skin"]) s.neighbour_skin = r.non_negative(disc["neighbour_skin"], "discretisation.neighbour_skin", " (in dx)");
-  for (int k = 0; k < D; ++k)
-    if (s.periodic[k] && (s.domain.max[k] - s.domain.min[k]) < 2 * s.R())
-      r.fail(dom["max"], "domain.max", "a periodic axis must be at least 2 R = " + std::to_string(2 * s.R()) + " m long");
+  for (int k = 0; k < D; ++k) {
+    if (!s.periodic[k]) continue;
+    const double L = s.domain.max[k] - s.domain.min[k];
+    const double cut = s.R() + s.neighbour_skin * s.dx;
+    if (L < 2 * cut)
+      r.fail(dom["max"], "domain.max", "a periodic axis must be at least 2 (R + skin) = " + std::to_string(2 * cut) + " m long");
+    if (std::abs(L / s.dx - std::round(L / s.dx)) > 1e-6 * (L / s.dx))
+      r.fail(disc["dx"], "discretisation.dx", "expected a spacing that divides the periodic length " + std::to_string(L) +
+                                                 " m of axis " + std::to_string(k) + " (a gap would open at the seam)");
+  }
 
   // fluid
   const YAML::Node fl = r.required(root, "", "fluid");
@@ -299,7 +324,7 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
                "the block lies outside the domain (domain.min/max)");
       }
       if (std::llround((fb.box.max[k] - fb.box.min[k]) / s.dx) < 1)
-        r.fail(b["max"], key + ".max", "empty fluid region: the block is thinner than one particle spacing dx = " + std::to_string(s.dx) + " m in axis " + std::to_string(k));
+        r.fail(b["max"], key + ".max", "empty fluid region: the block is thinner than half a particle spacing (dx = " + fmt(s.dx) + " m) in axis " + std::to_string(k));
     }
     if (const YAML::Node v = b["velocity"]) {
       if (v.IsMap()) {
@@ -321,7 +346,93 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
       if (fb.pressure_kind == InitialPressure::TaylorGreen && fb.velocity_kind != InitialVelocity::TaylorGreen)
         r.fail(p, key + ".pressure", "taylor_green pressure needs a taylor_green velocity");
     }
+    for (std::size_t o = 0; o < s.blocks.size(); ++o) {
+      bool overlap = true;
+      for (int k = 0; k < D; ++k)
+        overlap = overlap && fb.box.min[k] < s.blocks[o].box.max[k] - 0.5 * s.dx && s.blocks[o].box.min[k] < fb.box.max[k] - 0.5 * s.dx;
+      if (overlap) r.fail(b, key, "overlaps fluid_blocks[" + std::to_string(o) + "]; blocks must not share volume");
+    }
     s.blocks.push_back(fb);
+  }
+
+  // walls (NFM, 2D polylines)
+  if (const YAML::Node ws = root["walls"]) {
+    if (!ws.IsSequence()) r.fail(ws, "walls", "expected a list of walls");
+    if (D != 2 && ws.size() > 0) r.fail(ws, "walls", "NFM walls are implemented in 2D only so far");
+    for (std::size_t i = 0; i < ws.size(); ++i) {
+      const std::string key = "walls[" + std::to_string(i) + "]";
+      const YAML::Node w = ws[i];
+      r.only_keys(w, key, {"name", "points", "file", "closed", "fluid_side", "condition", "motion"});
+      Wall wall;
+      wall.name = w["name"] ? r.text(w["name"], key + ".name", "a wall name") : "wall" + std::to_string(i);
+      if (w["points"] && w["file"]) r.fail(w["file"], key + ".file", "give either points or file, not both");
+      if (const YAML::Node pts = w["points"]) {
+        if (!pts.IsSequence()) r.fail(pts, key + ".points", "expected a list of [x, y] points");
+        for (std::size_t k = 0; k < pts.size(); ++k) {
+          const Vec3 v = r.vector(pts[k], key + ".points[" + std::to_string(k) + "]", 2, " (m)");
+          wall.points.push_back({v[0], v[1]});
+        }
+      } else if (const YAML::Node f = w["file"]) {
+        const std::string rel = r.text(f, key + ".file", "a CSV file of x, y lines");
+        const auto slash = path.find_last_of('/');
+        const std::string file = (!rel.empty() && rel[0] == '/') || slash == std::string::npos ? rel : path.substr(0, slash + 1) + rel;
+        std::ifstream in(file);
+        if (!in) r.fail(f, key + ".file", "cannot open '" + file + "'");
+        std::string line;
+        for (int ln = 1; std::getline(in, line); ++ln) {
+          const auto hash = line.find('#');
+          if (hash != std::string::npos) line.erase(hash);
+          for (char& c : line) if (c == ',' || c == ';' || c == '\t') c = ' ';
+          std::istringstream ls(line);
+          double x, y;
+          std::string rest;
+          if (!(ls >> x)) {
+            if (line.find_first_not_of(' ') == std::string::npos) continue;  // blank line
+            throw CaseError(file + ":" + std::to_string(ln) + ": expected two numbers 'x, y' (m), got '" + line + "'");
+          }
+          if (!(ls >> y) || (ls >> rest) || !std::isfinite(x) || !std::isfinite(y))
+            throw CaseError(file + ":" + std::to_string(ln) + ": expected two numbers 'x, y' (m), got '" + line + "'");
+          wall.points.push_back({x, y});
+        }
+      } else {
+        r.fail(w, key + ".points", "required: points (a list of [x, y]) or file (a CSV of x, y lines)");
+      }
+      if (w["closed"]) wall.closed = r.boolean(w["closed"], key + ".closed");
+      const std::size_t need = wall.closed ? 3 : 2;
+      if (wall.points.size() < need)
+        r.fail(w, key + ".points", "expected at least " + std::to_string(need) + " points for a" + (wall.closed ? " closed" : "n open") + " wall");
+      const std::size_t nseg = wall.closed ? wall.points.size() : wall.points.size() - 1;
+      for (std::size_t k = 0; k < nseg; ++k) {
+        const auto& a = wall.points[k];
+        const auto& b = wall.points[(k + 1) % wall.points.size()];
+        if (std::hypot(b[0] - a[0], b[1] - a[1]) < 1e-9 * s.dx)
+          r.fail(w["points"] ? w["points"] : w, key + ".points", "segment " + std::to_string(k) + " has zero length (repeated point)");
+      }
+      if (w["fluid_side"]) {
+        const std::string side = wall.closed ? r.word(w["fluid_side"], key + ".fluid_side", {"inside", "outside"})
+                                             : r.word(w["fluid_side"], key + ".fluid_side", {"left", "right"});
+        wall.fluid_inside = side == "inside" || side == "left";
+      } else {
+        r.fail(w, key + ".fluid_side", wall.closed ? "required for a closed wall: inside (a tank) or outside (a body)"
+                                                   : "required for an open wall: left or right of the direction of its points");
+      }
+      if (w["condition"])
+        wall.condition = r.word(w["condition"], key + ".condition", {"no_slip", "slip"}) == "slip" ? WallCondition::Slip : WallCondition::NoSlip;
+      if (const YAML::Node m = w["motion"]) {
+        const std::string mk = key + ".motion";
+        r.only_keys(m, mk, {"type", "velocity", "amplitude", "period"});
+        const std::string type = r.word(r.required(m, mk, "type"), mk + ".type", {"fixed", "sliding", "translation", "oscillation"});
+        if (type == "sliding" || type == "translation") {
+          wall.motion = type == "sliding" ? WallMotion::Sliding : WallMotion::Translation;
+          wall.velocity = r.vector(r.required(m, mk, "velocity"), mk + ".velocity", D, " (m/s)");
+        } else if (type == "oscillation") {
+          wall.motion = WallMotion::Oscillation;
+          wall.amplitude = r.vector(r.required(m, mk, "amplitude"), mk + ".amplitude", D, " (m)");
+          wall.period = r.positive(r.required(m, mk, "period"), mk + ".period", " (s)");
+        }
+      }
+      s.walls.push_back(wall);
+    }
   }
 
   // forces
@@ -393,9 +504,10 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
 
   // time
   const YAML::Node t = r.required(root, "", "time");
-  r.only_keys(t, "time", {"duration", "output_interval", "max_steps"});
+  r.only_keys(t, "time", {"duration", "output_interval", "max_steps", "damping"});
   s.duration = r.positive(r.required(t, "time", "duration"), "time.duration", " (s)");
   s.output_interval = r.positive(r.required(t, "time", "output_interval"), "time.output_interval", " (s)");
+  if (t["damping"]) s.damping_time = r.non_negative(t["damping"], "time.damping", " (s)");
   if (t["max_steps"]) s.max_steps = r.integer(t["max_steps"], "time.max_steps", 1, 1LL << 50);
 
   // probes
@@ -405,13 +517,27 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
       const std::string key = "probes[" + std::to_string(i) + "]";
       r.only_keys(pr[i], key, {"name", "position"});
       Probe p;
-      p.name = r.required(pr[i], key, "name").as<std::string>();
+      p.name = r.text(r.required(pr[i], key, "name"), key + ".name", "a probe name");
+      if (p.name.find_first_of(", \"") != std::string::npos)
+        r.fail(pr[i]["name"], key + ".name", "expected a name without commas, spaces or quotes (it heads CSV columns)");
+      for (const Probe& q : s.probes)
+        if (q.name == p.name) r.fail(pr[i]["name"], key + ".name", "duplicate probe name '" + p.name + "'");
       p.position = r.vector(r.required(pr[i], key, "position"), key + ".position", D, " (m)");
       for (int k = 0; k < D; ++k)
         if (p.position[k] < s.domain.min[k] || p.position[k] > s.domain.max[k])
           r.fail(pr[i]["position"], key + ".position", "the probe lies outside the domain");
       s.probes.push_back(p);
     }
+  }
+
+  // reference solution
+  if (const YAML::Node rf = root["reference"]) {
+    r.only_keys(rf, "reference", {"type", "length", "origin"});
+    const std::string t = r.word(r.required(rf, "reference", "type"), "reference.type", {"poiseuille", "hydrostatic", "martin_moyce"});
+    s.reference.kind = t == "poiseuille" ? ReferenceKind::Poiseuille : t == "hydrostatic" ? ReferenceKind::Hydrostatic : ReferenceKind::MartinMoyce;
+    s.reference.length = r.positive(r.required(rf, "reference", "length"), "reference.length", " (m)");
+    if (rf["origin"]) s.reference.origin = r.vector(rf["origin"], "reference.origin", D, " (m)");
+    if (D != 2) r.fail(rf, "reference", "these references are 2D");
   }
 
   // memory: refuse a particle count that cannot fit before anything is allocated
@@ -422,11 +548,12 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
     n += c;
   }
   const double mem = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
-  if (n * bytes_per_particle(D) > 0.8 * mem || n > 4e9) {
+  if (n * bytes_per_particle(D) > 0.8 * mem || n > 2147483647.0) {
     std::ostringstream m;
     m.precision(3);
     m << "the fluid blocks need " << n << " particles (about " << n * bytes_per_particle(D) / 1073741824.0
-      << " GiB), more than 80% of this machine's " << mem / 1073741824.0 << " GiB; expected a larger dx";
+      << " GiB), more than 80% of this machine's " << mem / 1073741824.0
+      << " GiB or than 2^31 - 1 particles per rank; expected a larger dx";
     r.fail(disc["dx"], "discretisation.dx", m.str());
   }
   return s;

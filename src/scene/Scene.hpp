@@ -30,6 +30,32 @@ struct FluidBlock {
   InitialPressure pressure_kind = InitialPressure::Zero;
 };
 
+// A wall of the Normal Flux Method: a polyline (2D) of segments. The stored
+// orientation is the fluid side; the normal out of the fluid (n_out, used by the
+// operators) and into it (n_in, used by the Shepard formulas) derive from it.
+enum class WallMotion { Fixed, Sliding, Translation, Oscillation };
+enum class WallCondition { NoSlip, Slip };
+
+struct Wall {
+  std::string name;
+  std::vector<std::array<double, 2>> points;  // vertices, in order
+  bool closed = false;
+  bool fluid_inside = true;  // closed: fluid inside the polygon; open: fluid on the left of a->b
+  WallCondition condition = WallCondition::NoSlip;
+  WallMotion motion = WallMotion::Fixed;
+  Vec3 velocity{0, 0, 0};   // sliding: surface velocity; translation: body velocity (m/s)
+  Vec3 amplitude{0, 0, 0};  // oscillation: x(t) = x0 + A sin(2 pi t / T) (m)
+  double period = 0;        // oscillation period (s)
+};
+
+// The analytic or experimental reference a case is compared with (errors in summary.json).
+enum class ReferenceKind { None, Poiseuille, Hydrostatic, MartinMoyce };
+struct Reference {
+  ReferenceKind kind = ReferenceKind::None;
+  double length = 0;  // poiseuille: channel height L; hydrostatic: water depth H; martin_moyce: column width a (m)
+  Vec3 origin{0, 0, 0};  // poiseuille: bottom wall point; hydrostatic: tank bottom; martin_moyce: back wall at the floor (m)
+};
+
 struct Probe {
   std::string name;
   Vec3 position{0, 0, 0};
@@ -60,6 +86,8 @@ struct Scene {
   double R() const { return R_over_dx * dx; }
 
   std::vector<FluidBlock> blocks;
+  std::vector<Wall> walls;
+  double wall_quadrature_spacing = 0;  // m; 0: dx / 4
 
   Vec3 gravity{0, 0, 0};     // m/s^2
   Vec3 body_force{0, 0, 0};  // m/s^2 (force per unit mass)
@@ -80,7 +108,9 @@ struct Scene {
   double duration = 0.0;         // s
   double output_interval = 0.0;  // s
   std::int64_t max_steps = -1;   // -1: no limit
+  double damping_time = 0;       // s: initial relaxation, u *= exp(-dt / (damping_time / 10)) while t < damping_time
   std::vector<Probe> probes;
+  Reference reference;
 };
 
 std::string to_string(KernelType);

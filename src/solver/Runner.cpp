@@ -14,6 +14,7 @@
 #include "app/BuildInfo.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/SnapshotWriter.hpp"
+#include "solver/References.hpp"
 #include "solver/Simulation.hpp"
 
 namespace ondine {
@@ -54,8 +55,37 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
   report.particles = sim.size();
   double last_dt = 0;
   bool diverged = false;
+  std::ostringstream wall_csv, front_csv;
+  wall_csv << std::setprecision(12) << "time,step";
+  if (sim.has_walls())
+    for (const WallForce& f : sim.wall_forces())
+      for (const char* part : {"pressure", "viscous"})
+        for (int k = 0; k < D; ++k) wall_csv << "," << f.name << "." << part << "_f" << "xyz"[k];
+  wall_csv << "\n";
+  const bool dam_break = scene.reference.kind == ReferenceKind::MartinMoyce;
+  const double a = scene.reference.length;
+  const double g = std::abs(scene.gravity[1]);
+  std::vector<std::pair<double, double>> front;  // (T, Z)
+  front_csv << std::setprecision(8) << "T,Z,Z_experiment\n";
   auto record = [&]() {
+    sim.update_free_surface();
     snapshots.write(sim.particles(), sim.time(), sim.steps());
+    if (sim.has_walls()) {
+      wall_csv << sim.time() << "," << sim.steps();
+      for (const WallForce& f : sim.wall_forces()) {
+        for (int k = 0; k < D; ++k) wall_csv << "," << f.pressure[k];
+        for (int k = 0; k < D; ++k) wall_csv << "," << f.viscous[k];
+      }
+      wall_csv << "\n";
+      write_text_atomically(opt.out_dir + "/walls.csv", wall_csv.str());
+    }
+    if (dam_break) {
+      const double T = sim.time() * std::sqrt(2 * g / a);
+      const double Z = (sim.front_position() - scene.reference.origin[0]) / a;
+      front.emplace_back(T, Z);
+      front_csv << T << "," << Z << "," << reference::interpolate(reference::martin_moyce_front(), T) << "\n";
+      write_text_atomically(opt.out_dir + "/front.csv", front_csv.str());
+    }
     const Diagnostics d = sim.diagnostics();
     diag_csv << sim.time() << "," << sim.steps() << "," << last_dt << "," << d.mass;
     for (int k = 0; k < D; ++k) diag_csv << "," << d.momentum[k];
@@ -130,6 +160,35 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
   report.simulated_time = sim.time();
   report.wall_seconds = std::chrono::duration<double>(Clock::now() - wall0).count();
   if (report.status != "diverged") report.errors = sim.errors();
+  if (dam_break && report.status != "diverged") {
+    // surge front against Martin & Moyce for T <= 3: worst relative error, and the
+    // front speed dZ/dT fitted over 1.5 <= T <= 3 against the experiment's
+    double worst = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int m = 0;
+    for (const auto& [T, Z] : front) {
+      if (T > 3.0 + 1e-9 || T < 0.3) continue;
+      const double Ze = reference::interpolate(reference::martin_moyce_front(), T);
+      worst = std::max(worst, std::abs(Z - Ze) / Ze);
+      if (T >= 1.5) {
+        sx += T; sy += Z; sxx += T * T; sxy += T * Z;
+        ++m;
+      }
+    }
+    double se = 0;  // experiment's slope over the same interval, least squares on its points
+    {
+      double ex = 0, ey = 0, exx = 0, exy = 0;
+      int me = 0;
+      for (const auto& [T, Z] : reference::martin_moyce_front())
+        if (T >= 1.5 && T <= 3.0) { ex += T; ey += Z; exx += T * T; exy += T * Z; ++me; }
+      se = (me * exy - ex * ey) / (me * exx - ex * ex);
+    }
+    report.errors["front_max_relative_error"] = worst;
+    if (m >= 3) {
+      const double slope = (m * sxy - sx * sy) / (m * sxx - sx * sx);
+      report.errors["front_speed"] = slope;
+      report.errors["front_speed_relative_error"] = std::abs(slope - se) / se;
+    }
+  }
 
   nlohmann::json j;
   j["case"] = scene.name;

@@ -12,7 +12,9 @@
 #include "kernels/FluxArgs.hpp"
 #include "kernels/NeighbourList.hpp"
 #include "particles/ParticleSet.hpp"
+#include "kernels/FluidRegion.hpp"
 #include "scene/Scene.hpp"
+#include "solver/WallModel.hpp"
 
 namespace ondine {
 
@@ -31,6 +33,12 @@ struct ProbeSample {
   double pressure = 0, density = 0;
   Vec3 velocity{0, 0, 0};
   double shepard = 0;  // sum_j w_j W: 0 means no fluid around the probe
+};
+
+// Force of the fluid on one wall (the reaction of the wall terms of 4.22 and 4.85).
+struct WallForce {
+  std::string name;
+  Vec3 pressure{0, 0, 0}, viscous{0, 0, 0};  // N (per metre of span in 2D)
 };
 
 template <int D>
@@ -59,8 +67,20 @@ class Simulation {
   // Derivatives (du/dt, drho/dt, pressure) at the current state; public for tests.
   void evaluate();
 
+  // NFM walls
+  bool has_walls() const { return !walls_.empty(); }
+  std::vector<WallForce> wall_forces();
+  // particles on the solid side of a wall or closer than 0.1 dx to one
+  std::int64_t wall_leaks() const;
+  // free-surface flag (4.86-4.87) into field::FreeSurface, at output times
+  void update_free_surface();
+  // x of the leading edge of the fluid (max x + dx/2), for the dam-break front
+  double front_position() const;
+
  private:
   void fill();
+  void remove_outside_fluid();
+  void update_walls(double t);
   void ensure_neighbours();
   void reorder_by_cell();
   double time_step() const;
@@ -78,6 +98,9 @@ class Simulation {
   field_view_t<field::Velocity, D> u0_, u_acc_;
   field_view_t<field::Density, D> rho0_, rho_acc_;
   FluxFunction<D> flux_ = nullptr;
+  WallModel<D> walls_;
+  FluidRegion<D> region_;
+  double stage_time_ = 0;
   double t_ = 0;
   std::int64_t steps_ = 0, builds_ = 0;
   bool list_valid_ = false;

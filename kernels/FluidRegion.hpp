@@ -1,0 +1,101 @@
+#pragma once
+// Which lattice points of the initial fill lie in the fluid: on the fluid side
+// of every closed wall (inside a tank, outside a body; crossing-number test) and
+// at least `clearance` (dx/2) from every wall segment. Also the impermeability
+// diagnostic: particles closer than 0.1 dx to a wall or on its solid side.
+#include "kernels/WallSet.hpp"
+
+namespace ondine {
+
+namespace detail {
+KOKKOS_INLINE_FUNCTION double segment_distance2(const Vec<2>& p, const Vec<2>& a, const Vec<2>& b) {
+  const Vec<2> ab = b - a;
+  double t = dot(p - a, ab) / norm2(ab);
+  t = t < 0 ? 0 : (t > 1 ? 1 : t);
+  return norm2(p - (a + t * ab));
+}
+}  // namespace detail
+
+// Closed walls as ranges of segments, with the side the fluid is on.
+struct ClosedWallRanges {
+  Kokkos::View<int*, MemSpace> first, count;  // segment range of each closed wall
+  Kokkos::View<int*, MemSpace> fluid_inside;  // 1: tank, 0: body
+  int walls = 0;
+};
+
+template <int D>
+struct FluidRegion {
+  WallSegments<D> seg;
+  ClosedWallRanges closed;
+
+  // 1 when p is in the fluid with at least `clearance` to every segment
+  KOKKOS_INLINE_FUNCTION bool contains(const Vec<D>& p, double clearance) const {
+    if constexpr (D != 2) {
+      return true;  // walls are 2D only (the parser refuses 3D walls)
+    } else {
+      return contains2(p, clearance);
+    }
+  }
+  KOKKOS_INLINE_FUNCTION bool contains2(const Vec<2>& p, double clearance) const {
+    for (int s = 0; s < seg.count; ++s)
+      if (detail::segment_distance2(p, load<2>(seg.a, s), load<2>(seg.b, s)) < clearance * clearance) return false;
+    for (int w = 0; w < closed.walls; ++w) {
+      bool inside = false;
+      for (int s = closed.first(w); s < closed.first(w) + closed.count(w); ++s) {
+        const Vec<2> a = load<2>(seg.a, s), b = load<2>(seg.b, s);
+        if ((a[1] > p[1]) != (b[1] > p[1]) && p[0] < a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))
+          inside = !inside;
+      }
+      if (inside != (closed.fluid_inside(w) == 1)) return false;
+    }
+    return true;
+  }
+};
+
+// keep(i) = 1 for lattice points in the fluid region
+template <int D>
+struct FluidRegionFilter {
+  FluidRegion<D> region;
+  double clearance;
+  field_view_t<field::Position, D> x;
+  Kokkos::View<int*, MemSpace> keep;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { keep(i) = region.contains(load<D>(x, i), clearance) ? 1 : 0; }
+};
+
+// Counts particles that have leaked (outside the fluid region) or come closer than `near` to a wall.
+template <int D>
+struct WallLeakCount {
+  FluidRegion<D> region;
+  double near;
+  field_view_t<field::Position, D> x;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, long& c) const {
+    if (!region.contains(load<D>(x, i), near)) ++c;
+  }
+};
+
+// Exclusive scan of keep flags into new indices; total in the return value.
+struct KeepScan {
+  Kokkos::View<int*, MemSpace> keep, index;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, int& partial, const bool final) const {
+    if (final) index(i) = partial;
+    partial += keep(i);
+  }
+};
+
+// gather list: order(index(i)) = i for kept i
+struct KeepGather {
+  Kokkos::View<int*, MemSpace> keep, index, order;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    if (keep(i)) order(index(i)) = i;
+  }
+};
+
+}  // namespace ondine
+
+namespace ondine {
+// id(i) = i
+struct Iota {
+  Kokkos::View<std::int64_t*, MemSpace> id;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { id(i) = i; }
+};
+}  // namespace ondine

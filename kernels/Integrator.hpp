@@ -1,0 +1,84 @@
+#pragma once
+// Explicit Runge-Kutta updates of the particle state (classical RK4 and the
+// explicit midpoint predictor-corrector; driven by Simulation<D>::step).
+// Positions are wrapped into the periodic box after every update.
+#include "kernels/Fields.hpp"
+#include "kernels/PeriodicBox.hpp"
+
+namespace ondine {
+
+// One stage: y = y0 + c_dt k with k the current derivatives (du/dt, drho/dt, and
+// u for dx/dt), and, when accumulate is set, the RK4 weighted sum acc += w k
+// (acc = w k on the first stage).
+template <int D>
+struct RungeKuttaStage {
+  PeriodicBox<D> box;
+  field_view_t<field::Position, D> x;
+  field_view_t<field::Velocity, D> u;
+  field_view_t<field::Density, D> rho;
+  field_view_t<field::Acceleration, D> du;
+  field_view_t<field::DensityRate, D> drho;
+  field_view_t<field::Position, D> x0, xa;  // y0 and the RK4 sums (unused unless accumulate)
+  field_view_t<field::Velocity, D> u0, ua;
+  field_view_t<field::Density, D> r0, ra;
+  double c_dt, w;
+  bool accumulate, first;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    for (int k = 0; k < D; ++k) {
+      const double uk = u(i, k);
+      if (accumulate) {
+        xa(i, k) = (first ? 0.0 : xa(i, k)) + w * uk;
+        ua(i, k) = (first ? 0.0 : ua(i, k)) + w * du(i, k);
+      }
+      x(i, k) = box.wrap(x0(i, k) + c_dt * uk, k);
+      u(i, k) = u0(i, k) + c_dt * du(i, k);
+    }
+    if (accumulate) ra(i) = (first ? 0.0 : ra(i)) + w * drho(i);
+    rho(i) = r0(i) + c_dt * drho(i);
+  }
+
+  void run(int n) const { Kokkos::parallel_for("ondine::Integrator::stage", Kokkos::RangePolicy<ExecSpace>(0, n), *this); }
+};
+
+// Final classical RK4 update: y1 = y0 + dt (acc + k4/6), acc = (k1 + 2 k2 + 2 k3)/6.
+template <int D>
+struct RungeKutta4Final {
+  PeriodicBox<D> box;
+  field_view_t<field::Position, D> x;
+  field_view_t<field::Velocity, D> u;
+  field_view_t<field::Density, D> rho;
+  field_view_t<field::Acceleration, D> du;
+  field_view_t<field::DensityRate, D> drho;
+  field_view_t<field::Position, D> x0, xa;
+  field_view_t<field::Velocity, D> u0, ua;
+  field_view_t<field::Density, D> r0, ra;
+  double dt;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    for (int k = 0; k < D; ++k) {
+      const double uk = u(i, k);
+      x(i, k) = box.wrap(x0(i, k) + dt * (xa(i, k) + uk / 6.0), k);
+      u(i, k) = u0(i, k) + dt * (ua(i, k) + du(i, k) / 6.0);
+    }
+    rho(i) = r0(i) + dt * (ra(i) + drho(i) / 6.0);
+  }
+
+  void run(int n) const {
+    Kokkos::parallel_for("ondine::Integrator::rk4_final", Kokkos::RangePolicy<ExecSpace>(0, n), *this);
+  }
+};
+
+// Initial relaxation of a scene that starts out of discrete equilibrium (time.damping;
+// not in the seeds): u *= factor, once per step while t < damping time.
+template <int D>
+struct VelocityDamping {
+  field_view_t<field::Velocity, D> u;
+  double factor;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    for (int k = 0; k < D; ++k) u(i, k) *= factor;
+  }
+  void run(int n) const { Kokkos::parallel_for("ondine::Damping", Kokkos::RangePolicy<ExecSpace>(0, n), *this); }
+};
+
+}  // namespace ondine

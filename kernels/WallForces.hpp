@@ -1,0 +1,75 @@
+#pragma once
+// Force of the fluid on the walls: the wall pressure of the normal flux (4.14),
+// with the MUSCL state and limiter of (4.30)-(4.32), and the viscous traction of
+// the NFM Laplacian's wall term (4.85), each Shepard-interpolated (2.40-2.41) at
+// every wall quadrature point q from the particles around it, then integrated:
+//   F_w = sum_{q in w} s_q [ <P_p>_q n_out + rho0 nu <(u_i - u_q) / |d_n|>_q ].
+// (The reaction of the particles' wall terms is not used: with the 1/gamma_i
+// Shepard factors the fluid-fluid terms do not cancel pairwise, so it would not
+// be the force on the wall.)
+#include "kernels/CellList.hpp"
+#include "kernels/WallSet.hpp"
+
+namespace ondine {
+
+template <int D, class Kernel>
+struct WallTraction {
+  WallPoints<D> wall;
+  CellList<D> cells;  // particle cell list
+  Kernel W;
+  double R2, nu, rho0, c0, eos_gamma, min_dn;
+  PeriodicBox<D> box;
+  field_view_t<field::Position, D> x;
+  field_view_t<field::Velocity, D> u;
+  field_view_t<field::Density, D> rho;
+  field_view_t<field::Pressure, D> P;
+  field_view_t<field::Mass, D> m;
+  field_view_t<field::DensityGradient, D> grad_rho;
+  Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace> traction;  // (q, 2D): pressure force, viscous force
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
+    const Vec<D> xq = load<D>(wall.x, q), n = load<D>(wall.n_out, q), uq = load<D>(wall.u, q);
+    double sw = 0.0, sp = 0.0;
+    Vec<D> sv = Vec<D>::zero();
+    int home[D];
+    for (int k = 0; k < D; ++k) home[k] = cells.grid.coord(xq[k], k);
+    for_each_adjacent_cell<D>(cells.grid, home, [&](const int c) {
+      for (int a = cells.cell_start(c); a < cells.cell_start(c + 1); ++a) {
+        const int i = cells.sorted(a);
+        const Vec<D> xiq = box.delta(load<D>(x, i), xq);
+        const double r2 = norm2(xiq);
+        if (r2 >= R2) continue;
+        const double rho_i = rho(i);
+        const double w = m(i) / rho_i * W.value(kmath::sqrt(r2));
+        const double c2 = c0 * c0 * kmath::pow(rho_i / rho0, eos_gamma - 1.0), c_i = kmath::sqrt(c2);
+        double rho_f = rho_i - dot(load<D>(grad_rho, i), xiq);
+        rho_f = kmath::fmax(0.99 * rho_i, kmath::fmin(rho_f, 1.01 * rho_i));
+        const Vec<D> ui = load<D>(u, i);
+        double un = dot(ui - uq, n);
+        un = kmath::fmax(-0.1 * c_i, kmath::fmin(un, 0.1 * c_i));
+        sp += w * (P(i) + c2 * (rho_f - rho_i) + rho_f * c_i * un);
+        double dn = dot(xiq, n);
+        if (dn > -min_dn) dn = -min_dn;
+        sv += (-w / dn) * (ui - uq);
+        sw += w;
+      }
+    });
+    const double s = wall.s(q);
+    for (int k = 0; k < D; ++k) {
+      traction(q, k) = sw > 0 ? s * sp / sw * n[k] : 0.0;
+      traction(q, D + k) = (sw > 0 && wall.no_slip(q)) ? s * rho0 * nu * sv[k] / sw : 0.0;
+    }
+  }
+};
+
+// sum over the points of one wall of one traction component
+struct WallTractionSum {
+  Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace> traction;
+  Kokkos::View<int*, MemSpace> wall;
+  int which, component;
+  KOKKOS_INLINE_FUNCTION void operator()(const int q, double& F) const {
+    if (wall(q) == which) F += traction(q, component);
+  }
+};
+
+}  // namespace ondine

@@ -1,0 +1,37 @@
+#include "solver/References.hpp"
+
+#include <cmath>
+
+namespace ondine::reference {
+
+double poiseuille_startup(double y, double t, double L, double F, double nu) {
+  double u = F / (2 * nu) * y * (L - y);
+  for (int n = 0; n < 200; ++n) {
+    const double k = 2 * n + 1;
+    const double term = 4 * F * L * L / (nu * M_PI * M_PI * M_PI * k * k * k) * std::sin(M_PI * y * k / L) *
+                        std::exp(-k * k * M_PI * M_PI * nu * t / (L * L));
+    u -= term;
+    if (std::abs(term) < 1e-16 * (1 + std::abs(u))) break;
+  }
+  return u;
+}
+
+const std::vector<std::pair<double, double>>& martin_moyce_front() {
+  static const std::vector<std::pair<double, double>> data = {
+      {0.0, 1.0},   {0.41, 1.11}, {0.84, 1.22}, {1.19, 1.44}, {1.43, 1.67}, {1.63, 1.89}, {1.83, 2.11},
+      {1.98, 2.33}, {2.20, 2.56}, {2.32, 2.78}, {2.51, 3.00}, {2.65, 3.22}, {2.83, 3.44}, {2.98, 3.67}};
+  return data;
+}
+
+double interpolate(const std::vector<std::pair<double, double>>& s, double x) {
+  if (x <= s.front().first) return s.front().second;
+  if (x >= s.back().first) return s.back().second;
+  for (std::size_t k = 1; k < s.size(); ++k)
+    if (x <= s[k].first) {
+      const double w = (x - s[k - 1].first) / (s[k].first - s[k - 1].first);
+      return (1 - w) * s[k - 1].second + w * s[k].second;
+    }
+  return s.back().second;
+}
+
+}  // namespace ondine::reference

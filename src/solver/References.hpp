@@ -1,0 +1,20 @@
+#pragma once
+// Reference solutions computed in code, and published data typed in with their source.
+#include <utility>
+#include <vector>
+
+namespace ondine::reference {
+
+// Start-up plane Poiseuille flow between walls y = 0 and y = L driven by a body
+// force F (Morris et al. 1997, eq. 21): u(y, t) = F/(2 nu) y (L - y)
+//   - sum_n 4 F L^2 / (nu pi^3 (2n+1)^3) sin(pi y (2n+1) / L) exp(-(2n+1)^2 pi^2 nu t / L^2).
+double poiseuille_startup(double y, double t, double L, double F, double nu);
+
+// Martin & Moyce (1952), n^2 = 2, Table 2: surge front Z = x/a against T = t sqrt(2 g / a)
+// (cases/reference/martin_moyce1952_front_n2_2.csv gives the source chain of these digits).
+const std::vector<std::pair<double, double>>& martin_moyce_front();
+
+// Linear interpolation of a sampled series (x sorted); clamps outside the range.
+double interpolate(const std::vector<std::pair<double, double>>& series, double x);
+
+}  // namespace ondine::reference

@@ -1,0 +1,133 @@
+// Analytical Shepard factor of NFM walls in 2D (thesis 4.52-4.59) against the
+// reference values of nfm.md §14, the closed-form flat-wall limit, and a
+// brute-force integration of the kernel over the fluid side.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include "kernels/ShepardGamma2D.hpp"
+#include "kernels/SmoothingKernels.hpp"
+
+using namespace ondine;
+
+namespace {
+
+struct Seg {
+  Vec<2> a, b, n_in;
+};
+
+Vec<2> v2(double x, double y) { return Vec<2>{{x, y}}; }
+
+double gamma_of(const std::vector<Seg>& segs, const Vec<2>& x, double R = 1.0) {
+  double g = 1.0;
+  for (const Seg& s : segs) g += shepard_gamma_segment(x, s.a, s.b, s.n_in, R);
+  return g;
+}
+
+// Midpoint integration of W over the fluid region on a grid whose cell edges lie
+// on the walls x = 0 and y = 0, so that every cell is wholly in or out of the
+// fluid: the error is the midpoint rule's O(h^2) on the smooth kernel.
+template <class Inside>
+double brute_force(const Vec<2>& x, double R, Inside inside, int per_R = 1000) {
+  const WendlandC2<2> W(R);
+  const double h = R / per_R;
+  const int a0 = static_cast<int>(std::floor((x[0] - R) / h)), a1 = static_cast<int>(std::ceil((x[0] + R) / h));
+  const int b0 = static_cast<int>(std::floor((x[1] - R) / h)), b1 = static_cast<int>(std::ceil((x[1] + R) / h));
+  double s = 0;
+  for (int a = a0; a < a1; ++a)
+    for (int b = b0; b < b1; ++b) {
+      const double px = (a + 0.5) * h, py = (b + 0.5) * h;
+      if (!inside(px, py)) continue;
+      s += W.value(std::hypot(px - x[0], py - x[1])) * h * h;
+    }
+  return s;
+}
+
+// a long flat floor y = 0, fluid above, cut into several segments
+std::vector<Seg> floor_segments(int pieces) {
+  std::vector<Seg> s;
+  const double x0 = -3, len = 6.0 / pieces;
+  for (int k = 0; k < pieces; ++k) s.push_back({v2(x0 + k * len, 0), v2(x0 + (k + 1) * len, 0), v2(0, 1)});
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("F(xi, d) matches the reference values", "[unit][nfm]") {
+  CHECK(shepard_F(0.5, 0.3) == Approx(-2.4582742587).epsilon(1e-9));
+  CHECK(shepard_F(0.9, 0.1) == Approx(-6.6916884603).epsilon(1e-9));
+  CHECK(shepard_F(-0.4, 0.5) == Approx(0.5097635338).epsilon(1e-9));
+}
+
+TEST_CASE("Shepard factor of a flat wall", "[unit][nfm]") {
+  const auto wall = floor_segments(7);
+  // far from the wall
+  CHECK(gamma_of(wall, v2(0.1, 1.5)) == 1.0);
+  // on the wall: 1/2, also exactly at a joint between two segments
+  CHECK(gamma_of(wall, v2(0.3, 0.0)) == Approx(0.5).epsilon(1e-14));
+  CHECK(gamma_of(wall, v2(-3 + 6.0 / 7, 0.0)) == Approx(0.5).epsilon(1e-14));
+  // digest §14 reference values, and the closed form gamma(d) = 1 + F(sqrt(1-d^2), d)/(6 pi)
+  const double d[] = {0.01, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.9};
+  const double ref[] = {0.514851, 0.573815, 0.644995, 0.771168, 0.867849, 0.971491, 0.997765, 0.999993};
+  for (int k = 0; k < 8; ++k) {
+    const double g = gamma_of(wall, v2(0.123, d[k]));
+    CHECK(g == Approx(ref[k]).margin(1e-6));
+    CHECK(g == Approx(1 + shepard_F(std::sqrt(1 - d[k] * d[k]), d[k]) / (6 * M_PI)).epsilon(1e-10));
+    // across a joint: continuous
+    const double joint = -3 + 3 * 6.0 / 7;
+    CHECK(gamma_of(wall, v2(joint - 1e-9, d[k])) == Approx(gamma_of(wall, v2(joint + 1e-9, d[k]))).epsilon(1e-7));
+  }
+  // the d -> 0 limit is continuous
+  CHECK(gamma_of(wall, v2(0.2, 1e-9)) == Approx(0.5).margin(1e-7));
+}
+
+TEST_CASE("Shepard factor in interior and exterior 90 degree corners", "[unit][nfm]") {
+  // interior corner, fluid in x > 0, y > 0: floor from (4, 0) to (0, 0), wall from (0, 0) to (0, 4)
+  const std::vector<Seg> inner = {{v2(4, 0), v2(0, 0), v2(0, 1)}, {v2(0, 0), v2(0, 4), v2(1, 0)}};
+  CHECK(gamma_of(inner, v2(0.3, 0.4)) == Approx(0.808760).margin(1e-6));
+  CHECK(gamma_of(inner, v2(0.1, 0.7)) == Approx(0.643459).margin(1e-6));
+  CHECK(gamma_of(inner, v2(0.5, 0.05)) == Approx(0.557254).margin(1e-6));
+  // at the corner (the limit d -> 0 depends on the direction there, so approach it)
+  CHECK(gamma_of(inner, v2(1e-7, 1e-7)) == Approx(0.25).margin(1e-6));
+  // exterior corner, solid in x < 0, y < 0: fluid on the outside of the quadrant
+  const std::vector<Seg> outer = {{v2(-4, 0), v2(0, 0), v2(0, 1)}, {v2(0, 0), v2(0, -4), v2(1, 0)}};
+  CHECK(gamma_of(outer, v2(0.2, -0.3)) == Approx(0.800606).margin(1e-6));
+  CHECK(gamma_of(outer, v2(-0.3, 0.25)) == Approx(0.845844).margin(1e-6));
+  CHECK(gamma_of(outer, v2(0.05, 0.05)) == Approx(0.818329).margin(1e-6));
+  // against brute-force integration of W over the fluid, off the reference points
+  const double R = 0.7;
+  auto in_inner = [](double x, double y) { return x > 0 && y > 0; };
+  auto in_outer = [](double x, double y) { return x > 0 || y > 0; };
+  for (const Vec<2>& p : {v2(0.11, 0.23), v2(0.4, 0.02), v2(0.6, 0.6)}) {
+    CHECK(gamma_of(inner, p, R) == Approx(brute_force(p, R, in_inner)).margin(1e-6));
+  }
+  for (const Vec<2>& p : {v2(0.11, -0.23), v2(-0.4, 0.02), v2(0.05, 0.01)}) {
+    CHECK(gamma_of(outer, p, R) == Approx(brute_force(p, R, in_outer)).margin(1e-6));
+  }
+}
+
+TEST_CASE("Numerical Shepard (4.51) with many points converges to the analytical value", "[unit][nfm]") {
+  // gamma = 1 - sum_j s_j f(|x_i - x_j|/R) (x_i - x_j).n_out with f = (7/pi) g_2 / R^2 (nfm.md §4-5)
+  auto g2 = [](double r) { return 0.5 - 2.5 * r * r + 4 * r * r * r - 2.5 * std::pow(r, 4) + 4.0 / 7 * std::pow(r, 5) - 1 / (14 * r * r); };
+  const double R = 1.0, d = 0.05;
+  const double exact = gamma_of(floor_segments(3), v2(0.0, d), R);
+  double prev_err = 1;
+  for (int m : {20, 80, 320, 1280}) {
+    // wall points on y = 0 for |x| < R, n_out = (0, -1)
+    double g = 1.0;
+    const double s = 2 * R / m;
+    for (int q = 0; q < m; ++q) {
+      const double xq = -R + (q + 0.5) * s;
+      const double r = std::hypot(xq, d) / R;
+      if (r >= 1) continue;
+      const double f = 7 / M_PI * g2(r) / (R * R);
+      g -= s * f * (d * -1.0);  // (x_i - x_j).n_out = d * (-1)
+    }
+    const double err = std::abs(g - exact);
+    INFO("m = " << m << ": |numerical - analytical| = " << err);
+    CHECK((err < prev_err || err < 1e-12));
+    prev_err = err;
+  }
+  CHECK(prev_err < 1e-6);
+}
