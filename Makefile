@@ -1,7 +1,7 @@
 # Ondine: the two commands of the quick start are `make run` and `make test`.
 # Both set up the dependencies on first use (scripts/setup-deps.sh), configure and build.
 BUILD    ?= build
-CASE     ?= cases/taylor_green_2d.yaml
+CASE     ?= cases/dam_break_2d.yaml
 ARGS     ?=
 JOBS     ?= $(shell nproc)
 KOKKOS   ?= $(if $(ONDINE_KOKKOS_ROOT),$(ONDINE_KOKKOS_ROOT),$(CURDIR)/.deps/kokkos)

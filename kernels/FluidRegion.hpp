@@ -27,6 +27,7 @@ template <int D>
 struct FluidRegion {
   WallSegments<D> seg;
   ClosedWallRanges closed;
+  double behind = 0;  // depth behind a segment that counts as crossed (dx)
 
   // 1 when p is in the fluid with at least `clearance` to every segment
   KOKKOS_INLINE_FUNCTION bool contains(const Vec<D>& p, double clearance) const {
@@ -37,8 +38,14 @@ struct FluidRegion {
     }
   }
   KOKKOS_INLINE_FUNCTION bool contains2(const Vec<2>& p, double clearance) const {
-    for (int s = 0; s < seg.count; ++s)
-      if (detail::segment_distance2(p, load<2>(seg.a, s), load<2>(seg.b, s)) < clearance * clearance) return false;
+    for (int s = 0; s < seg.count; ++s) {
+      const Vec<2> a = load<2>(seg.a, s), b = load<2>(seg.b, s);
+      if (detail::segment_distance2(p, a, b) < clearance * clearance) return false;
+      // behind a segment (its solid side), less than `behind` from it: crossed (open walls too)
+      const double t = dot(p - a, b - a) / norm2(b - a);
+      const double dn = dot(load<2>(seg.n_in, s), p - a);
+      if (t >= 0 && t <= 1 && dn < 0 && dn > -behind) return false;
+    }
     for (int w = 0; w < closed.walls; ++w) {
       bool inside = false;
       for (int s = closed.first(w); s < closed.first(w) + closed.count(w); ++s) {

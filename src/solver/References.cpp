@@ -23,6 +23,38 @@ const std::vector<std::pair<double, double>>& martin_moyce_front() {
   return data;
 }
 
+namespace {
+double ls_slope(const std::vector<std::pair<double, double>>& s, double lo, double hi, int& m) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  m = 0;
+  for (const auto& [x, y] : s)
+    if (x >= lo && x <= hi + 1e-9) {
+      sx += x; sy += y; sxx += x * x; sxy += x * y;
+      ++m;
+    }
+  return (m * sxy - sx * sy) / (m * sxx - sx * sx);
+}
+}  // namespace
+
+std::map<std::string, double> martin_moyce_errors(const std::vector<std::pair<double, double>>& front) {
+  std::map<std::string, double> e;
+  double worst = 0;
+  for (const auto& [T, Z] : front) {
+    if (T > 3.0 + 1e-9 || T < 0.3) continue;
+    const double Ze = interpolate(martin_moyce_front(), T);
+    worst = std::max(worst, std::abs(Z - Ze) / Ze);
+  }
+  e["front_max_relative_error"] = worst;
+  int m = 0, me = 0;
+  const double slope = ls_slope(front, 1.5, 3.0, m);
+  const double se = ls_slope(martin_moyce_front(), 1.5, 3.0, me);
+  if (m >= 3) {
+    e["front_speed"] = slope;
+    e["front_speed_relative_error"] = std::abs(slope - se) / se;
+  }
+  return e;
+}
+
 double interpolate(const std::vector<std::pair<double, double>>& s, double x) {
   if (x <= s.front().first) return s.front().second;
   if (x >= s.back().first) return s.back().second;

@@ -1,5 +1,7 @@
 #pragma once
 // Reference solutions computed in code, and published data typed in with their source.
+#include <map>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -13,6 +15,11 @@ double poiseuille_startup(double y, double t, double L, double F, double nu);
 // Martin & Moyce (1952), n^2 = 2, Table 2: surge front Z = x/a against T = t sqrt(2 g / a)
 // (cases/reference/martin_moyce1952_front_n2_2.csv gives the source chain of these digits).
 const std::vector<std::pair<double, double>>& martin_moyce_front();
+
+// Errors of a simulated surge front (T, Z) against Martin & Moyce for 0.3 <= T <= 3:
+// front_max_relative_error (max |Z - Z_exp| / Z_exp), front_speed (least-squares dZ/dT over
+// 1.5 <= T <= 3) and front_speed_relative_error against the experiment's slope there.
+std::map<std::string, double> martin_moyce_errors(const std::vector<std::pair<double, double>>& front);
 
 // Linear interpolation of a sampled series (x sorted); clamps outside the range.
 double interpolate(const std::vector<std::pair<double, double>>& series, double x);

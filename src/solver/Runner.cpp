@@ -160,35 +160,8 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
   report.simulated_time = sim.time();
   report.wall_seconds = std::chrono::duration<double>(Clock::now() - wall0).count();
   if (report.status != "diverged") report.errors = sim.errors();
-  if (dam_break && report.status != "diverged") {
-    // surge front against Martin & Moyce for T <= 3: worst relative error, and the
-    // front speed dZ/dT fitted over 1.5 <= T <= 3 against the experiment's
-    double worst = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
-    int m = 0;
-    for (const auto& [T, Z] : front) {
-      if (T > 3.0 + 1e-9 || T < 0.3) continue;
-      const double Ze = reference::interpolate(reference::martin_moyce_front(), T);
-      worst = std::max(worst, std::abs(Z - Ze) / Ze);
-      if (T >= 1.5) {
-        sx += T; sy += Z; sxx += T * T; sxy += T * Z;
-        ++m;
-      }
-    }
-    double se = 0;  // experiment's slope over the same interval, least squares on its points
-    {
-      double ex = 0, ey = 0, exx = 0, exy = 0;
-      int me = 0;
-      for (const auto& [T, Z] : reference::martin_moyce_front())
-        if (T >= 1.5 && T <= 3.0) { ex += T; ey += Z; exx += T * T; exy += T * Z; ++me; }
-      se = (me * exy - ex * ey) / (me * exx - ex * ex);
-    }
-    report.errors["front_max_relative_error"] = worst;
-    if (m >= 3) {
-      const double slope = (m * sxy - sx * sy) / (m * sxx - sx * sx);
-      report.errors["front_speed"] = slope;
-      report.errors["front_speed_relative_error"] = std::abs(slope - se) / se;
-    }
-  }
+  if (dam_break && report.status != "diverged")
+    for (const auto& [k, v] : reference::martin_moyce_errors(front)) report.errors[k] = v;
 
   nlohmann::json j;
   j["case"] = scene.name;

@@ -70,8 +70,8 @@ class Simulation {
   // NFM walls
   bool has_walls() const { return !walls_.empty(); }
   std::vector<WallForce> wall_forces();
-  // particles on the solid side of a wall or closer than 0.1 dx to one
-  std::int64_t wall_leaks() const;
+  // particles on the solid side of a wall or closer than `clearance` (default 0.1 dx) to one
+  std::int64_t wall_leaks(double clearance = -1) const;
   // free-surface flag (4.86-4.87) into field::FreeSurface, at output times
   void update_free_surface();
   // x of the leading edge of the fluid (max x + dx/2), for the dam-break front

@@ -63,6 +63,7 @@ Simulation<D>::Simulation(const Scene& scene) : scene_(scene), p_(count_particle
   if (walls) {
     walls_ = WallModel<D>(scene, box_, R_);
     region_.seg = walls_.segments();
+    region_.behind = scene.dx;
     // closed walls as segment ranges (host loop over walls)
     std::vector<int> first, count, inside;
     int s0 = 0;
@@ -514,11 +515,11 @@ std::vector<WallForce> Simulation<D>::wall_forces() {
 }
 
 template <int D>
-std::int64_t Simulation<D>::wall_leaks() const {
+std::int64_t Simulation<D>::wall_leaks(double clearance) const {
   if (walls_.empty()) return 0;
   long c = 0;
   Kokkos::parallel_reduce("ondine::NFM::leaks", Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(p_.size())),
-                          WallLeakCount<D>{region_, 0.1 * scene_.dx, p_.get(field::Position{})}, c);
+                          WallLeakCount<D>{region_, clearance < 0 ? 0.1 * scene_.dx : clearance, p_.get(field::Position{})}, c);
   return c;
 }
 
