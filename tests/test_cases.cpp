@@ -96,3 +96,20 @@ TEST_CASE("Taylor-Green vortex: velocity error against the analytic decay at t =
   CHECK(coarse < 0.04);
   CHECK(fine < 0.04);
 }
+
+// With particle shifting (2.107-2.111) the vortex keeps its particles ordered
+// up to t = 0.5; measured 0.180 (dx = 1/25) and 0.092 (dx = 1/50): first order,
+// and still above the 5 % the solver-core issue asks at 50 x 50 (see docs/validation.md).
+TEST_CASE("Taylor-Green vortex with shifting: error at t = 0.5 falls with resolution", "[case][taylor_green]") {
+  auto err = [](double dx) {
+    Scene s = load_case(src + "/cases/taylor_green_2d.yaml",
+                        {"discretisation.dx=" + std::to_string(dx), "time.duration=0.5", "scheme.shifting=true"});
+    Simulation<2> sim(s);
+    while (sim.time() < 0.5 * (1 - 1e-12)) sim.step(0.5);
+    return sim.errors().at("velocity_l2");
+  };
+  const double coarse = err(1.0 / 25), fine = err(1.0 / 50);
+  INFO("velocity L2 error at t = 0.5: dx=1/25 -> " << coarse << ", dx=1/50 -> " << fine);
+  CHECK(fine < 0.6 * coarse);
+  CHECK(fine < 0.12);
+}

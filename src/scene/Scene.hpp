@@ -97,6 +97,7 @@ struct Scene {
   double delta_sph = 0.0;             // 0 = no delta-SPH term (2.60)
   double artificial_viscosity = 0.0;  // alpha of (2.58); 0 = off
   bool background_pressure = false;   // tensile correction (2.105)
+  bool shifting = false;              // particle shifting (2.107)-(2.111), flows without free surface
   TimeIntegrator integrator = TimeIntegrator::RK4;
   double cfl_acoustic = 0.375;  // (2.102)
   double cfl_viscous = 0.12;    // (2.103)

@@ -11,6 +11,7 @@
 #include "kernels/InitialFill.hpp"
 #include "kernels/Integrator.hpp"
 #include "kernels/Permute.hpp"
+#include "kernels/ShiftingPass.hpp"
 #include "kernels/ProbeSum.hpp"
 #include "kernels/TimeStep.hpp"
 #include "scene/CaseFile.hpp"
@@ -388,6 +389,19 @@ double Simulation<D>::step(double t_stop) {
     stage_time_ = t_ + 0.5 * dt;
     evaluate();
     stage_update(dt, 0.0, false);
+  }
+  if (scene_.shifting) {
+    // (2.107)-(2.111) once per step, into the stage storage, then copied back
+    ensure_neighbours();
+    with_kernel<D>(scene_.kernel, R_, [&](auto W) {
+      ShiftingPass<D, decltype(W)>{list_, box_, W, R_ * R_, 0.5 * R_ * R_, W.value(scene_.dx), 0.2 * scene_.dx,
+                                   p_.get(field::Position{}), p_.get(field::Velocity{}), p_.get(field::Density{}),
+                                   p_.get(field::Mass{}), x0_, u0_, rho0_}
+          .run(n);
+    });
+    Kokkos::deep_copy(p_.get(field::Position{}), x0_);
+    Kokkos::deep_copy(p_.get(field::Velocity{}), u0_);
+    Kokkos::deep_copy(p_.get(field::Density{}), rho0_);
   }
   if (t_ < scene_.damping_time)
     VelocityDamping<D>{p_.get(field::Velocity{}), std::exp(-dt / (0.1 * scene_.damping_time))}.run(n);
