@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "app/BuildInfo.hpp"
+#include "app/Validate.hpp"
 #include "scene/CaseFile.hpp"
 #include "solver/Runner.hpp"
 
@@ -34,10 +35,24 @@ int run_app(int argc, char** argv, int ranks) {
   run->add_option("--out", out_dir, "output folder (default: out/<case name>)");
   run->add_option("--set", sets, "override a case key, e.g. --set discretisation.dx=0.01 (repeatable)");
   run->add_flag("--quiet", quiet, "no progress line");
+  auto* validate = app.add_subcommand("validate", "run the validation cases over a resolution ladder (docs/validation.md)");
+  ondine::ValidateOptions vopt;
+  validate->add_option("--case", vopt.cases, "case name (repeatable; default: all)");
+  validate->add_option("--level", vopt.level, "quick (the CI subset) or full (the whole ladder)");
+  validate->add_option("--out", vopt.out_dir, "output folder (default: out/validation)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
+  }
+  if (validate->parsed()) {
+    vopt.source_dir = ONDINE_SOURCE_DIR;
+    try {
+      return ondine::run_validation(vopt);
+    } catch (const ondine::CaseError& e) {
+      std::fprintf(stderr, "ondine: error: %s\n", e.what());
+      return 2;
+    }
   }
 
   ondine::Scene scene;

@@ -365,6 +365,10 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
       r.only_keys(w, key, {"name", "points", "file", "closed", "fluid_side", "condition", "motion"});
       Wall wall;
       wall.name = w["name"] ? r.text(w["name"], key + ".name", "a wall name") : "wall" + std::to_string(i);
+      if (wall.name.find_first_of(", \"") != std::string::npos)
+        r.fail(w["name"], key + ".name", "expected a name without commas, spaces or quotes (it heads CSV columns)");
+      for (const Wall& o : s.walls)
+        if (o.name == wall.name) r.fail(w["name"] ? w["name"] : w, key + ".name", "duplicate wall name '" + wall.name + "'");
       if (w["points"] && w["file"]) r.fail(w["file"], key + ".file", "give either points or file, not both");
       if (const YAML::Node pts = w["points"]) {
         if (!pts.IsSequence()) r.fail(pts, key + ".points", "expected a list of [x, y] points");
@@ -434,6 +438,9 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
       s.walls.push_back(wall);
     }
   }
+
+  if (!s.walls.empty() && s.kernel != KernelType::WendlandC2)
+    r.fail(disc["kernel"], "discretisation.kernel", "NFM walls need wendland_c2: the analytical Shepard factor (thesis 4.55) is Wendland's");
 
   // forces
   if (const YAML::Node f = root["forces"]) {
@@ -545,6 +552,8 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
     s.reference.length = r.positive(r.required(rf, "reference", "length"), "reference.length", " (m)");
     if (rf["origin"]) s.reference.origin = r.vector(rf["origin"], "reference.origin", D, " (m)");
     if (D != 2) r.fail(rf, "reference", "these references are 2D");
+    if (s.reference.kind == ReferenceKind::Poiseuille && !(s.nu > 0))
+      r.fail(rf["type"], "reference.type", "poiseuille needs fluid.viscosity > 0");
   }
 
   // memory: refuse a particle count that cannot fit before anything is allocated

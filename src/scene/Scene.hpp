@@ -103,7 +103,7 @@ struct Scene {
   double cfl_viscous = 0.12;    // (2.103)
   double cfl_force = 0.25;      // [V&I 11]
   int reorder_interval = 50;    // steps between particle reorderings by cell
-  double neighbour_skin = 0.0;  // multiple of dx (0: cell traversal, no list)
+  double neighbour_skin = 0.3;  // Verlet skin, in dx (0: the list is rebuilt at every evaluation)
 
   // time and output
   double duration = 0.0;         // s

@@ -39,12 +39,14 @@ double ls_slope(const std::vector<std::pair<double, double>>& s, double lo, doub
 std::map<std::string, double> martin_moyce_errors(const std::vector<std::pair<double, double>>& front) {
   std::map<std::string, double> e;
   double worst = 0;
+  int samples = 0;
   for (const auto& [T, Z] : front) {
     if (T > 3.0 + 1e-9 || T < 0.3) continue;
     const double Ze = interpolate(martin_moyce_front(), T);
     worst = std::max(worst, std::abs(Z - Ze) / Ze);
+    ++samples;
   }
-  e["front_max_relative_error"] = worst;
+  if (samples > 0) e["front_max_relative_error"] = worst;
   int m = 0, me = 0;
   const double slope = ls_slope(front, 1.5, 3.0, m);
   const double se = ls_slope(martin_moyce_front(), 1.5, 3.0, me);

@@ -68,7 +68,7 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
   std::vector<std::pair<double, double>> front;  // (T, Z)
   front_csv << std::setprecision(8) << "T,Z,Z_experiment\n";
   auto record = [&]() {
-    sim.update_free_surface();
+    sim.prepare_output();
     snapshots.write(sim.particles(), sim.time(), sim.steps());
     if (sim.has_walls()) {
       wall_csv << sim.time() << "," << sim.steps();

@@ -74,6 +74,8 @@ class Simulation {
   std::int64_t wall_leaks(double clearance = -1) const;
   // free-surface flag (4.86-4.87) into field::FreeSurface, at output times
   void update_free_surface();
+  // before a snapshot: pressure from the EOS, Shepard factor and walls at time t, free surface
+  void prepare_output();
   // x of the leading edge of the fluid (max x + dx/2), for the dam-break front
   double front_position() const;
 

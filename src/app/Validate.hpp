@@ -1,0 +1,21 @@
+#pragma once
+// `ondine validate`: runs each validation case over a ladder of resolutions,
+// compares with its reference, writes validation.json and validation.md (and
+// PNG plots through scripts/plot_validation.py when python3-matplotlib is
+// present), and fails when a run misses its thresholds.
+#include <string>
+#include <vector>
+
+namespace ondine {
+
+struct ValidateOptions {
+  std::vector<std::string> cases;  // empty: all
+  std::string level = "quick";     // quick | full
+  std::string out_dir = "out/validation";
+  std::string source_dir;          // where cases/ and scripts/ are
+};
+
+// Returns the process exit code: 0 when every run passed its thresholds.
+int run_validation(const ValidateOptions& options);
+
+}  // namespace ondine
