@@ -544,18 +544,17 @@ void Simulation<D>::prepare_output() {
   detail::with_eos<D>(scene_, [&](auto eos) {
     update_pressure<D>(eos, p_.get(field::Density{}), p_.get(field::Pressure{}), n);
   });
-  if (!walls_.empty()) {
-    update_walls(t_);
-    ShepardGammaPass<D>{walls_.segments(), R_, box_, p_.get(field::Position{}), p_.get(field::ShepardGamma{})}.run(n);
-  }
+  if (!walls_.empty()) update_walls(t_);
   update_free_surface();
 }
 
 template <int D>
 void Simulation<D>::update_free_surface() {
+  const int n = static_cast<int>(p_.size());
+  if (!walls_.empty())
+    ShepardGammaPass<D>{walls_.segments(), R_, box_, p_.get(field::Position{}), p_.get(field::ShepardGamma{})}.run(n);
   if (!p_.has(field::FreeSurface{})) return;
   ensure_neighbours();
-  const int n = static_cast<int>(p_.size());
   with_kernel<D>(scene_.kernel, R_, [&](auto W) {
     using K = decltype(W);
     if (walls_.empty())
