@@ -2,7 +2,7 @@
 // Renormalised density gradient (thesis 2.42-2.44), read by the delta-SPH term:
 //   M_i = sum_j w_j (x_j - x_i) (x) grad_i W_ij,  <grad rho>_i = M_i^{-T} sum_j w_j (rho_j - rho_i) grad_i W_ij.
 // Where M_i is singular (an isolated particle) the gradient is left unrenormalised.
-#include "kernels/NeighbourList.hpp"
+#include "kernels/NeighbourLoops.hpp"
 
 namespace ondine {
 
@@ -22,20 +22,14 @@ struct DensityGradientPass {
     const double rho_i = rho(i);
     Mat<D> M = Mat<D>::zero();
     Vec<D> g = Vec<D>::zero();
-    const int nn = list.num_neighbours(i);
-    for (int n = 0; n < nn; ++n) {
-      const int j = list.neighbour(i, n);
-      const Vec<D> xij = box.delta(xi, load<D>(x, j));
-      const double r2 = norm2(xij);
-      if (r2 >= R2) continue;
-      const double r = kmath::sqrt(r2);
+    for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>& xij, const double r) {
       const double rho_j = rho(j);
       const double w = m(j) / rho_j;
       const Vec<D> gradW = (W.derivative(r) / r) * xij;
       for (int a = 0; a < D; ++a)
         for (int b = 0; b < D; ++b) M.a[a][b] -= w * xij[a] * gradW[b];  // (x_j - x_i) = -x_ij
       g += (w * (rho_j - rho_i)) * gradW;
-    }
+    });
     Mat<D> B;
     if (invert(M, B, 1e-12)) {
       Vec<D> r;

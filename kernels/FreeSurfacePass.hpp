@@ -9,7 +9,7 @@
 // length; thresholds and scan region from that paper, not from the seed): i is
 // on the surface when no neighbour lies in the umbrella around T = x_i + h n~.
 #include "kernels/CellList.hpp"
-#include "kernels/NeighbourList.hpp"
+#include "kernels/NeighbourLoops.hpp"
 #include "kernels/WallSet.hpp"
 
 namespace ondine {
@@ -58,36 +58,22 @@ struct FreeSurfacePass {
     const Vec<D> xi = load<D>(x, i);
     Mat<D> M = Mat<D>::zero();
     Vec<D> v = Vec<D>::zero();
-    const int nn = list.num_neighbours(i);
-    for (int n = 0; n < nn; ++n) {
-      const int j = list.neighbour(i, n);
-      const Vec<D> xij = box.delta(xi, load<D>(x, j));
-      const double r2 = norm2(xij);
-      if (r2 >= R2) continue;
-      const double r = kmath::sqrt(r2);
+    for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>& xij, const double r) {
       const double w = m(j) / rho(j);
       const Vec<D> gradW = (W.derivative(r) / r) * xij;
       for (int a = 0; a < D; ++a)
         for (int b = 0; b < D; ++b) M.a[a][b] -= w * xij[a] * gradW[b];
       v += w * gradW;
-    }
+    });
     double inv_gamma = 1.0;
     if constexpr (Walls) {
       inv_gamma = 1.0 / gamma(i);
-      int home[D];
-      for (int k = 0; k < D; ++k) home[k] = wall_cells.grid.coord(xi[k], k);
-      for_each_adjacent_cell<D>(wall_cells.grid, home, [&](const int c) {
-        for (int a = wall_cells.cell_start(c); a < wall_cells.cell_start(c + 1); ++a) {
-          const int q = wall_cells.sorted(a);
-          const Vec<D> xiq = box.delta(xi, load<D>(wall.x, q));
-          const double r2 = norm2(xiq);
-          if (r2 >= R2) continue;
-          const double sW = wall.s(q) * W.value(kmath::sqrt(r2));
-          const Vec<D> nq = load<D>(wall.n_out, q);
-          for (int a2 = 0; a2 < D; ++a2)
-            for (int b2 = 0; b2 < D; ++b2) M.a[a2][b2] -= sW * xiq[a2] * nq[b2];
-          v += sW * nq;
-        }
+      for_each_point_within<D>(wall_cells, box, wall.x, xi, R2, [&](const int q, const Vec<D>& xiq, const double r) {
+        const double sW = wall.s(q) * W.value(r);
+        const Vec<D> nq = load<D>(wall.n_out, q);
+        for (int a2 = 0; a2 < D; ++a2)
+          for (int b2 = 0; b2 < D; ++b2) M.a[a2][b2] -= sW * xiq[a2] * nq[b2];
+        v += sW * nq;
       });
     }
     for (int a = 0; a < D; ++a)
@@ -108,6 +94,7 @@ struct FreeSurfacePass {
         const double h = 0.5 * R;
         Vec<D> T = xi + h * nt;
         bool blocked = false;
+        const int nn = list.num_neighbours(i);
         for (int n = 0; n < nn && !blocked; ++n) {
           const int j = list.neighbour(i, n);
           const Vec<D> xji = box.delta(load<D>(x, j), xi);  // x_j - x_i

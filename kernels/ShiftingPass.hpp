@@ -8,7 +8,7 @@
 //   phi_i^ = phi_i + (grad phi)_i . dx_i
 // with renormalised gradients (2.42)-(2.44) of velocity and density.
 // Writes the shifted state into (x_out, u_out, rho_out); the caller swaps.
-#include "kernels/NeighbourList.hpp"
+#include "kernels/NeighbourLoops.hpp"
 
 namespace ondine {
 
@@ -33,13 +33,7 @@ struct ShiftingPass {
     Mat<D> M = Mat<D>::zero();
     Mat<D> Gu = Mat<D>::zero();  // sum_j w_j (u_j - u_i) (x) grad_i W_ij
     Vec<D> grho = Vec<D>::zero(), gradC = Vec<D>::zero();
-    const int nn = list.num_neighbours(i);
-    for (int n = 0; n < nn; ++n) {
-      const int j = list.neighbour(i, n);
-      const Vec<D> xij = box.delta(xi, load<D>(x, j));
-      const double r2 = norm2(xij);
-      if (r2 >= R2) continue;
-      const double r = kmath::sqrt(r2);
+    for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>& xij, const double r) {
       const double rho_j = rho(j);
       const double w = m(j) / rho_j;
       const Vec<D> gradW = (W.derivative(r) / r) * xij;
@@ -53,7 +47,7 @@ struct ShiftingPass {
           Gu.a[a][b] += w * du[a] * gradW[b];
         }
       grho += (w * (rho_j - rho_i)) * gradW;
-    }
+    });
     Vec<D> dx = (-half_R2) * gradC;
     const double len2 = norm2(dx);
     if (len2 > max_shift * max_shift) dx *= max_shift / kmath::sqrt(len2);

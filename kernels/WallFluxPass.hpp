@@ -11,7 +11,7 @@
 // relative velocity within 0.1 c_i. P_f = P_i + c_i^2 (rho_f - rho_i) (first order in
 // rho_f - rho_i <= 1 %, exact for the linear law). Then every sum is divided by gamma_i:
 //   du_i = g + (fluid + wall sums) / gamma_i,  drho_i = (fluid + wall sums) / gamma_i.
-#include "kernels/CellList.hpp"
+#include "kernels/NeighbourLoops.hpp"
 #include "kernels/WallSet.hpp"
 
 namespace ondine {
@@ -44,15 +44,9 @@ struct WallFluxPass {
     const Vec<D> g_rho = load<D>(grad_rho, i);
     Vec<D> acc = Vec<D>::zero();
     double dr = 0.0;
-    int home[D];
-    for (int k = 0; k < D; ++k) home[k] = wall_cells.grid.coord(xi[k], k);
-    for_each_adjacent_cell<D>(wall_cells.grid, home, [&](const int c) {
-      for (int a = wall_cells.cell_start(c); a < wall_cells.cell_start(c + 1); ++a) {
-        const int q = wall_cells.sorted(a);
-        const Vec<D> xiq = box.delta(xi, load<D>(wall.x, q));
-        const double r2 = norm2(xiq);
-        if (r2 >= R2) continue;
-        const double Wq = W.value(kmath::sqrt(r2)) * wall.s(q);
+    for_each_point_within<D>(wall_cells, box, wall.x, xi, R2, [&](const int q, const Vec<D>& xiq, const double r) {
+      {
+        const double Wq = W.value(r) * wall.s(q);
         const Vec<D> n = load<D>(wall.n_out, q);
         const Vec<D> uq = load<D>(wall.u, q);
         // (4.30)-(4.31): rho reconstructed at the wall point, within 1 %

@@ -7,7 +7,7 @@
 // (The reaction of the particles' wall terms is not used: with the 1/gamma_i
 // Shepard factors the fluid-fluid terms do not cancel pairwise, so it would not
 // be the force on the wall.)
-#include "kernels/CellList.hpp"
+#include "kernels/NeighbourLoops.hpp"
 #include "kernels/WallSet.hpp"
 
 namespace ondine {
@@ -31,16 +31,11 @@ struct WallTraction {
     const Vec<D> xq = load<D>(wall.x, q), n = load<D>(wall.n_out, q), uq = load<D>(wall.u, q);
     double sw = 0.0, sp = 0.0;
     Vec<D> sv = Vec<D>::zero();
-    int home[D];
-    for (int k = 0; k < D; ++k) home[k] = cells.grid.coord(xq[k], k);
-    for_each_adjacent_cell<D>(cells.grid, home, [&](const int c) {
-      for (int a = cells.cell_start(c); a < cells.cell_start(c + 1); ++a) {
-        const int i = cells.sorted(a);
-        const Vec<D> xiq = box.delta(load<D>(x, i), xq);
-        const double r2 = norm2(xiq);
-        if (r2 >= R2) continue;
+    for_each_point_within<D>(cells, box, x, xq, R2, [&](const int i, const Vec<D>& xqi, const double r) {
+      {
+        const Vec<D> xiq = -1.0 * xqi;  // x_i - x_q
         const double rho_i = rho(i);
-        const double w = m(i) / rho_i * W.value(kmath::sqrt(r2));
+        const double w = m(i) / rho_i * W.value(r);
         const double c2 = c0 * c0 * kmath::pow(rho_i / rho0, eos_gamma - 1.0), c_i = kmath::sqrt(c2);
         double rho_f = rho_i - dot(load<D>(grad_rho, i), xiq);
         rho_f = kmath::fmax(0.99 * rho_i, kmath::fmin(rho_f, 1.01 * rho_i));

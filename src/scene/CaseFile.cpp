@@ -140,7 +140,6 @@ class Reader {
     return n.Scalar();
   }
 
-  const std::string& file() const { return file_; }
 
  private:
   std::string file_;
