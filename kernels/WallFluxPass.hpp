@@ -77,3 +77,34 @@ struct WallFluxPass {
 };
 
 }  // namespace ondine
+
+namespace ondine {
+
+// Stiffness of the no-slip wall term of the NFM Laplacian (4.85) for particle i:
+// kappa_i = (2 nu / gamma_i) sum_q s_q W_iq / |d_n|, the rate at which it damps
+// u_i - u_wall. Near a wall (small d_n, gamma ~ 1/2) it exceeds the fluid
+// Laplacian's ~ nu / R^2 many times, so the explicit step must respect it:
+// dt <= 1 / max_i kappa_i (RK4 is stable up to kappa dt = 2.78; not in the seeds).
+template <int D, class Kernel>
+struct WallViscousStiffness {
+  WallPoints<D> wall;
+  CellList<D> wall_cells;
+  Kernel W;
+  double R2, nu, min_dn;
+  PeriodicBox<D> box;
+  field_view_t<field::Position, D> x;
+  field_view_t<field::ShepardGamma, D> gamma;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, double& kmax) const {
+    double k = 0.0;
+    for_each_point_within<D>(wall_cells, box, wall.x, load<D>(x, i), R2, [&](const int q, const Vec<D>& xiq, const double r) {
+      if (!wall.no_slip(q)) return;
+      double dn = dot(xiq, load<D>(wall.n_out, q));
+      if (dn > -min_dn) dn = -min_dn;
+      k += wall.s(q) * W.value(r) / -dn;
+    });
+    k *= 2.0 * nu / gamma(i);
+    if (k > kmax) kmax = k;
+  }
+};
+
+}  // namespace ondine

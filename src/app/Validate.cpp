@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <algorithm>
 #include <map>
 #include <sstream>
 
@@ -43,6 +44,21 @@ const std::vector<ValidationCase>& catalogue() {
        {{"pressure_linf", 0.03}, {"kinetic_over_potential", 1e-3}, {"wall_leaks", 0.5}}, {}},
       {"dam_break_2d", "cases/dam_break_2d.yaml", 0.05715, {{0.002286, false}, {0.001143, true}},
        {{"front_max_relative_error", 0.2}, {"front_speed_relative_error", 0.1}}, {}},
+      // Stiff and extreme cases (`--case stability`): each long enough to show growth, checked for
+      // NaN, unbounded kinetic energy (max E_k over 1/2 M u_ref^2), density leaving [0.9, 1.1] rho0
+      // and particles leaving the domain.
+      {"stability_dam_break_impacts", "cases/dam_break_2d.yaml", 0.05715, {{0.002286, false}, {0.001143, true}},
+       {{"non_finite", 0.5}, {"max_kinetic_energy_ratio", 2.0}, {"max_density_deviation", 0.1}, {"max_outside_domain", 0.5}},
+       {"time.duration=0.6", "time.output_interval=0.01"}},
+      {"stability_hydrostatic_10s_undamped", "cases/hydrostatic_tank_2d.yaml", 0.5, {{0.05, false}, {0.025, true}},
+       {{"non_finite", 0.5}, {"max_kinetic_energy_ratio", 0.01}, {"max_density_deviation", 0.1}, {"max_outside_domain", 0.5}},
+       {"time.duration=10", "time.damping=0", "time.output_interval=0.05"}},
+      {"stability_stiff_viscous_channel", "cases/poiseuille_2d.yaml", 1.0, {{0.04, false}, {0.02, true}},
+       {{"non_finite", 0.5}, {"max_kinetic_energy_ratio", 2.0}, {"max_density_deviation", 0.1}, {"max_outside_domain", 0.5}},
+       {"fluid.viscosity=10", "time.duration=0.5", "time.output_interval=0.05"}},
+      {"stability_free_fall_high_mach", "cases/free_fall_2d.yaml", 1.0, {{0.04, false}, {0.02, true}},
+       {{"non_finite", 0.5}, {"max_density_deviation", 0.1}, {"momentum_balance_error", 1e-10}},
+       {"fluid.mach=0.3", "time.duration=1.0"}},
   };
   return c;
 }
@@ -58,11 +74,16 @@ std::string fmt(double v) {
 
 int run_validation(const ValidateOptions& opt) {
   namespace fs = std::filesystem;
+  // no --case: the accuracy cases; --case stability: the stability suite
+  auto stability = [](const std::string& n) { return n.rfind("stability", 0) == 0; };
+  const bool want_stability = std::find(opt.cases.begin(), opt.cases.end(), "stability") != opt.cases.end();
   std::vector<const ValidationCase*> chosen;
   for (const ValidationCase& c : catalogue())
-    if (opt.cases.empty() || std::find(opt.cases.begin(), opt.cases.end(), c.name) != opt.cases.end()) chosen.push_back(&c);
+    if ((opt.cases.empty() && !stability(c.name)) || (want_stability && stability(c.name)) ||
+        std::find(opt.cases.begin(), opt.cases.end(), c.name) != opt.cases.end())
+      chosen.push_back(&c);
   for (const std::string& n : opt.cases) {
-    bool known = false;
+    bool known = n == "stability";
     for (const ValidationCase& c : catalogue()) known = known || c.name == n;
     if (!known) {
       std::string list;

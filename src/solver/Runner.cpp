@@ -53,6 +53,8 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
 
   RunReport report;
   report.particles = sim.size();
+  double max_rho_dev = 0, max_ke = 0;
+  std::int64_t max_outside = 0;
   double last_dt = 0;
   bool diverged = false;
   std::ostringstream wall_csv, front_csv;
@@ -102,6 +104,10 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
     }
     write_text_atomically(opt.out_dir + "/diagnostics.csv", diag_csv.str());
     diverged = !d.finite;
+    // stability figures over the whole run (validation.md): density range, kinetic energy, escapes
+    max_rho_dev = std::max({max_rho_dev, std::abs(d.rho_max / scene.rho0 - 1), std::abs(d.rho_min / scene.rho0 - 1)});
+    max_ke = std::max(max_ke, d.kinetic_energy);
+    max_outside = std::max(max_outside, d.outside_domain);
   };
 
   record();
@@ -160,6 +166,14 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
   report.simulated_time = sim.time();
   report.wall_seconds = std::chrono::duration<double>(Clock::now() - wall0).count();
   if (report.status != "diverged") report.errors = sim.errors();
+  {
+    // kinetic energy scale: 1/2 M u_ref^2 with u_ref the case's reference velocity
+    const double ke_scale = 0.5 * sim.diagnostics().mass * scene.reference_velocity * scene.reference_velocity;
+    report.errors["max_density_deviation"] = max_rho_dev;
+    report.errors["max_kinetic_energy_ratio"] = ke_scale > 0 ? max_ke / ke_scale : 0.0;
+    report.errors["max_outside_domain"] = static_cast<double>(max_outside);
+    report.errors["non_finite"] = report.status == "diverged" ? 1.0 : 0.0;
+  }
   if (dam_break && report.status != "diverged")
     for (const auto& [k, v] : reference::martin_moyce_errors(front)) report.errors[k] = v;
 

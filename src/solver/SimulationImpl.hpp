@@ -306,6 +306,17 @@ double Simulation<D>::time_step() const {
   double dt = scene_.cfl_acoustic * R_ / cmax;
   if (scene_.nu > 0) dt = std::min(dt, scene_.cfl_viscous * R_ * R_ / scene_.nu);
   if (a2max > 0) dt = std::min(dt, scene_.cfl_force * std::sqrt(R_ / std::sqrt(a2max)));
+  if (!walls_.empty() && scene_.viscous_term != ViscousTerm::None) {
+    double kmax = 0;
+    with_kernel<D>(scene_.kernel, R_, [&](auto W) {
+      Kokkos::parallel_reduce("ondine::TimeStep::wall_viscous", Kokkos::RangePolicy<ExecSpace>(0, n),
+                              WallViscousStiffness<D, decltype(W)>{walls_.points(), walls_.cells(), W, R_ * R_, scene_.nu,
+                                                                   0.05 * R_, box_, p_.get(field::Position{}),
+                                                                   p_.get(field::ShepardGamma{})},
+                              Kokkos::Max<double>(kmax));
+    });
+    if (kmax > 0) dt = std::min(dt, 1.0 / kmax);
+  }
   if (!std::isfinite(dt) || dt <= 0) throw std::runtime_error("time step is not finite (the state contains NaN)");
   return dt;
 }
