@@ -3,8 +3,12 @@
 // per time step to flows without a free surface:
 //   grad C_i = sum_j w_j (1 + f_ij) grad_i W_ij,  f_ij = 0.2 (W_ij / W(dx))^4   (2.110)-(2.111)
 //   dx_i = -0.5 R^2 grad C_i                                                    (2.109)
-// clamped to |dx_i| <= max_shift (not in the seed: it keeps one step's shift
-// small against the spacing), and the Taylor correction of the fields (2.107)
+// clamped to |dx_i| <= max_shift = 0.02 dx per step (not in the seed: (2.109) has
+// no time scale, so applied at every step it moves particles much faster than
+// the flow; with the clamp shifting is a slow regularisation. Measured on the
+// Taylor-Green vortex at 50 x 50, t = 0.5: 9.2 % error with a 0.2 dx clamp,
+// 0.68 % with 0.02 dx, and no kinetic energy injected in inviscid runs), and the
+// Taylor correction of the fields (2.107)
 //   phi_i^ = phi_i + (grad phi)_i . dx_i
 // with renormalised gradients (2.42)-(2.44) of velocity and density.
 // Writes the shifted state into (x_out, u_out, rho_out); the caller swaps.
