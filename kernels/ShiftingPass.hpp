@@ -13,10 +13,16 @@
 // with renormalised gradients (2.42)-(2.44) of velocity and density.
 // Writes the shifted state into (x_out, u_out, rho_out); the caller swaps.
 #include "kernels/NeighbourLoops.hpp"
+#include "kernels/WallSet.hpp"
 
 namespace ondine {
 
-template <int D, class Kernel>
+// With NFM walls the concentration gradient gets the wall term of (4.89),
+// sum_S s_q W_iq n_out, so that a particle next to a wall is not pushed into it.
+// (The parser still refuses shifting with walls: near a free surface the shift
+// must be switched off, and that guard is not built. Measured with it forced on,
+// Poiseuille L/25 and L/50: 0.18 % and 0.29 %, no leak.)
+template <int D, class Kernel, bool Walls = false>
 struct ShiftingPass {
   NeighbourList<D> list;
   PeriodicBox<D> box;
@@ -29,6 +35,8 @@ struct ShiftingPass {
   field_view_t<field::Position, D> x_out;
   field_view_t<field::Velocity, D> u_out;
   field_view_t<field::Density, D> rho_out;
+  WallPoints<D> wall;       // read with Walls only
+  CellList<D> wall_cells;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<D> xi = load<D>(x, i);
@@ -52,6 +60,11 @@ struct ShiftingPass {
         }
       grho += (w * (rho_j - rho_i)) * gradW;
     });
+    if constexpr (Walls) {
+      for_each_point_within<D>(wall_cells, box, wall.x, xi, R2, [&](const int q, const Vec<D>&, const double r) {
+        gradC += (wall.s(q) * W.value(r)) * load<D>(wall.n_out, q);
+      });
+    }
     Vec<D> dx = (-half_R2) * gradC;
     const double len2 = norm2(dx);
     if (len2 > max_shift * max_shift) dx *= max_shift / kmath::sqrt(len2);

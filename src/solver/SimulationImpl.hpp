@@ -405,10 +405,17 @@ double Simulation<D>::step(double t_stop) {
     // (2.107)-(2.111) once per step, into the stage storage, then copied back
     ensure_neighbours();
     with_kernel<D>(scene_.kernel, R_, [&](auto W) {
-      ShiftingPass<D, decltype(W)>{list_, box_, W, R_ * R_, 0.5 * R_ * R_, W.value(scene_.dx), 0.02 * scene_.dx,  // shift per step <= 0.02 dx
-                                   p_.get(field::Position{}), p_.get(field::Velocity{}), p_.get(field::Density{}),
-                                   p_.get(field::Mass{}), x0_, u0_, rho0_}
-          .run(n);
+      const double max_shift = 0.02 * scene_.dx;  // per step (kernels/ShiftingPass.hpp)
+      if (walls_.empty())
+        ShiftingPass<D, decltype(W), false>{list_, box_, W, R_ * R_, 0.5 * R_ * R_, W.value(scene_.dx), max_shift,
+                                            p_.get(field::Position{}), p_.get(field::Velocity{}), p_.get(field::Density{}),
+                                            p_.get(field::Mass{}), x0_, u0_, rho0_, walls_.points(), walls_.cells()}
+            .run(n);
+      else
+        ShiftingPass<D, decltype(W), true>{list_, box_, W, R_ * R_, 0.5 * R_ * R_, W.value(scene_.dx), max_shift,
+                                           p_.get(field::Position{}), p_.get(field::Velocity{}), p_.get(field::Density{}),
+                                           p_.get(field::Mass{}), x0_, u0_, rho0_, walls_.points(), walls_.cells()}
+            .run(n);
     });
     Kokkos::deep_copy(p_.get(field::Position{}), x0_);
     Kokkos::deep_copy(p_.get(field::Velocity{}), u0_);
