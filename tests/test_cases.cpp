@@ -111,3 +111,25 @@ TEST_CASE("Taylor-Green vortex with shifting: error at t = 0.5 below 5 % and fal
   CHECK(fine < 0.05);
   CHECK(fine < 0.6 * coarse);
 }
+
+TEST_CASE("A run that blows up stops itself, names what went wrong, keeps the last good state", "[cli][stability]") {
+  const fs::path out = fs::temp_directory_path() / "ondine_blowup";
+  fs::remove_all(out);
+  // an acoustic CFL ten times the RK4 bound makes the Taylor-Green run explode within a few dozen steps
+  const auto [rc, err] = run_cli("run " + src + "/cases/taylor_green_2d.yaml --quiet --out " + out.string() +
+                                 " --set scheme.cfl.acoustic=4 --set scheme.shifting=false");
+  INFO(err);
+  CHECK(rc == 3);
+  CHECK(err.find("blow-up at step") != std::string::npos);
+  CHECK(err.find("particle") != std::string::npos);
+  std::ifstream in(out / "summary.json");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  CHECK(ss.str().find("\"status\": \"diverged\"") != std::string::npos);
+  CHECK(ss.str().find("blow-up at step") != std::string::npos);
+  // the last snapshot holds a finite state (the start of the failed step)
+  std::size_t snaps = 0;
+  for (const auto& e : fs::directory_iterator(out)) snaps += e.path().extension() == ".h5";
+  CHECK(snaps >= 2);
+  fs::remove_all(out);
+}

@@ -121,8 +121,15 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
     const double next_output = std::min(scene.duration, output_index * scene.output_interval);
     try {
       last_dt = sim.step(next_output);
+    } catch (const BlowUp& e) {
+      // the particles hold the state at the start of the failed step: write it
+      std::fprintf(stderr, "ondine: %s; the last good state (t = %g s) is the last snapshot\n", e.what(), sim.time());
+      snapshots.write(sim.particles(), sim.time(), sim.steps());
+      report.message = e.what();
+      diverged = true;
     } catch (const std::runtime_error& e) {
       std::fprintf(stderr, "ondine: step %lld: %s\n", static_cast<long long>(sim.steps()), e.what());
+      report.message = e.what();
       diverged = true;
     }
     if (diverged) {
@@ -181,6 +188,7 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
   j["case"] = scene.name;
   j["source"] = scene.source_file;
   j["status"] = report.status;
+  if (!report.message.empty()) j["message"] = report.message;
   j["dimension"] = D;
   j["particles"] = sim.size();
   j["steps"] = sim.steps();

@@ -17,6 +17,7 @@ struct RunOptions {
 
 struct RunReport {
   std::string status;  // "completed", "diverged", "interrupted", "max_steps"
+  std::string message;  // what went wrong, when diverged
   std::int64_t steps = 0;
   std::size_t particles = 0;
   double wall_seconds = 0, simulated_time = 0;

@@ -5,6 +5,7 @@
 // Templated on dimension only; the physics is chosen once, in FluxDispatch.
 #include <cstdint>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,12 @@ struct ProbeSample {
 struct WallForce {
   std::string name;
   Vec3 pressure{0, 0, 0}, viscous{0, 0, 0};  // N (per metre of span in 2D)
+};
+
+// Thrown by step() when the state blows up; the particles hold the last good
+// state (the start of the failed step) when it is caught.
+struct BlowUp : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 
 template <int D>
@@ -87,6 +94,7 @@ class Simulation {
   void reorder_by_cell();
   double time_step() const;
   void stage_update(double c_dt, double acc_weight, bool first);
+  void check_state(double dt);
 
   Scene scene_;
   ParticleSet<D> p_;

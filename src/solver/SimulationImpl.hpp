@@ -1,6 +1,8 @@
 #pragma once
 // Definitions of Simulation<D>; included by Simulation2d.cpp and Simulation3d.cpp only.
+#include <climits>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "kernels/DensityGradientPass.hpp"
@@ -12,6 +14,7 @@
 #include "kernels/Integrator.hpp"
 #include "kernels/Permute.hpp"
 #include "kernels/ShiftingPass.hpp"
+#include "kernels/StateCheck.hpp"
 #include "kernels/ProbeSum.hpp"
 #include "kernels/TimeStep.hpp"
 #include "scene/CaseFile.hpp"
@@ -421,12 +424,49 @@ double Simulation<D>::step(double t_stop) {
     Kokkos::deep_copy(p_.get(field::Velocity{}), u0_);
     Kokkos::deep_copy(p_.get(field::Density{}), rho0_);
   }
+  check_state(dt);
   if (t_ < scene_.damping_time)
     VelocityDamping<D>{p_.get(field::Velocity{}), std::exp(-dt / (0.1 * scene_.damping_time))}.run(n);
   t_ += dt;
   ++steps_;
   stage_time_ = t_;
   return dt;
+}
+
+// Stops the run at the first step that produced a non-finite state or a density
+// outside [0.5, 2] rho0, naming the step, time, particle and quantity; the state
+// at the start of the step is put back so that the caller can write it.
+template <int D>
+void Simulation<D>::check_state(double dt) {
+  const int n = static_cast<int>(p_.size());
+  int first = INT_MAX;
+  Kokkos::parallel_reduce("ondine::StateCheck", Kokkos::RangePolicy<ExecSpace>(0, n),
+                          FirstBadParticle<D>{p_.get(field::Position{}), p_.get(field::Velocity{}),
+                                              p_.get(field::Density{}), 0.5 * scene_.rho0, 2.0 * scene_.rho0},
+                          Kokkos::Min<int>(first));
+  if (first == INT_MAX) return;
+  // what went wrong, read from the host for that one particle
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), Kokkos::subview(p_.get(field::Position{}), first, Kokkos::ALL));
+  auto u = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), Kokkos::subview(p_.get(field::Velocity{}), first, Kokkos::ALL));
+  auto r = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), Kokkos::subview(p_.get(field::Density{}), first));
+  auto id = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), Kokkos::subview(p_.get(field::GlobalId{}), first));
+  std::ostringstream m;
+  m << "blow-up at step " << steps_ + 1 << ", t = " << t_ + dt << " s: particle " << id() << " (at";
+  for (int k = 0; k < D; ++k) m << " " << x(k);
+  m << ") has ";
+  bool finite = std::isfinite(r());
+  for (int k = 0; k < D; ++k) finite = finite && std::isfinite(x(k)) && std::isfinite(u(k));
+  if (!finite) {
+    m << "a non-finite state (density " << r() << ", velocity";
+    for (int k = 0; k < D; ++k) m << " " << u(k);
+    m << ")";
+  } else {
+    m << "density " << r() / scene_.rho0 << " rho0, outside [0.5, 2] rho0";
+  }
+  Kokkos::deep_copy(p_.get(field::Position{}), x0_);
+  Kokkos::deep_copy(p_.get(field::Velocity{}), u0_);
+  Kokkos::deep_copy(p_.get(field::Density{}), rho0_);
+  throw BlowUp(m.str());
 }
 
 template <int D>
