@@ -5,6 +5,7 @@
 //   du_i   += -(1/rho_i) s_q (P_p + P_i) W_iq n_out                       (4.22)
 //   drho_i += -rho_i s_q ((u_q - u_i) . n_out) W_iq                      (4.25)
 //   du_i   += 2 nu s_q (u_i - u_q) / d_n W_iq,  d_n = (x_i - x_q).n_out   (4.85, no-slip walls, viscous scenes)
+// (plus 2 P_min inside the bracket with the background-pressure correction 2.105),
 // with the wall pressure of the normal flux (4.14), P_p = P_f + rho_f c_f (u_f - u_q).n_out,
 // the fluid state reconstructed at the wall point (MUSCL, 4.30) with the renormalised
 // density gradient and limited by (4.31)-(4.32): rho_f within 1 % of rho_i, the normal
@@ -27,6 +28,7 @@ struct WallFluxPass {
   double rho0, c0, eos_gamma;  // c^2 = c0^2 (rho/rho0)^(gamma-1); gamma = 1 for the linear law
   double min_dn;               // |d_n| floor of the viscous wall term (0.05 R)
   PeriodicBox<D> box;
+  double P_min;                // background pressure (2.105); 0 when the scene does not use it
   field_view_t<field::Position, D> x;
   field_view_t<field::Velocity, D> u;
   field_view_t<field::Density, D> rho;
@@ -57,7 +59,9 @@ struct WallFluxPass {
         un = kmath::fmax(-0.1 * c_i, kmath::fmin(un, 0.1 * c_i));
         const double P_f = P_i + c2 * (rho_f - rho_i);
         const double P_p = P_f + rho_f * c_i * un;  // (4.14)
-        acc += (-(P_p + P_i) * Wq / rho_i) * n;
+        // (2.105) shifts P_i + P_j by 2 P_min in the fluid sum; its wall counterpart keeps
+        // the shift from pushing particles into the wall (sum_P w grad W + sum_S s W n = 0)
+        acc += (-(P_p + P_i + 2.0 * P_min) * Wq / rho_i) * n;
         dr -= rho_i * dot(uq - ui, n) * Wq;
         if constexpr (Viscous) {
           if (wall.no_slip(q)) {

@@ -546,8 +546,12 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
   // reference solution
   if (const YAML::Node rf = root["reference"]) {
     r.only_keys(rf, "reference", {"type", "length", "origin"});
-    const std::string t = r.word(r.required(rf, "reference", "type"), "reference.type", {"poiseuille", "hydrostatic", "martin_moyce"});
-    s.reference.kind = t == "poiseuille" ? ReferenceKind::Poiseuille : t == "hydrostatic" ? ReferenceKind::Hydrostatic : ReferenceKind::MartinMoyce;
+    const std::string t = r.word(r.required(rf, "reference", "type"), "reference.type",
+                                 {"poiseuille", "hydrostatic", "martin_moyce", "ghia_re100", "ghia_re1000"});
+    s.reference.kind = t == "poiseuille" ? ReferenceKind::Poiseuille
+                       : t == "hydrostatic" ? ReferenceKind::Hydrostatic
+                       : t == "martin_moyce" ? ReferenceKind::MartinMoyce
+                       : t == "ghia_re100" ? ReferenceKind::GhiaRe100 : ReferenceKind::GhiaRe1000;
     s.reference.length = r.positive(r.required(rf, "reference", "length"), "reference.length", " (m)");
     if (rf["origin"]) s.reference.origin = r.vector(rf["origin"], "reference.origin", D, " (m)");
     if (D != 2) r.fail(rf, "reference", "these references are 2D");

@@ -1,6 +1,9 @@
 #include "solver/References.hpp"
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
 
 namespace ondine::reference {
 
@@ -55,6 +58,23 @@ std::map<std::string, double> martin_moyce_errors(const std::vector<std::pair<do
     e["front_speed_relative_error"] = std::abs(slope - se) / se;
   }
   return e;
+}
+
+std::vector<std::vector<double>> read_table(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open reference data " + path);
+  std::vector<std::vector<double>> rows;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    for (char& c : line)
+      if (c == ',') c = ' ';
+    std::istringstream ls(line);
+    std::vector<double> row;
+    for (double v; ls >> v;) row.push_back(v);
+    if (!row.empty() && ls.eof()) rows.push_back(row);  // the header line does not parse
+  }
+  return rows;
 }
 
 double interpolate(const std::vector<std::pair<double, double>>& s, double x) {

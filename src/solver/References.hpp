@@ -21,6 +21,9 @@ const std::vector<std::pair<double, double>>& martin_moyce_front();
 // 1.5 <= T <= 3) and front_speed_relative_error against the experiment's slope there.
 std::map<std::string, double> martin_moyce_errors(const std::vector<std::pair<double, double>>& front);
 
+// Numeric rows of a CSV file ('#' comments and the header line skipped).
+std::vector<std::vector<double>> read_table(const std::string& path);
+
 // Linear interpolation of a sampled series (x sorted); clamps outside the range.
 double interpolate(const std::vector<std::pair<double, double>>& series, double x);
 

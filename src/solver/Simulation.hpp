@@ -68,6 +68,7 @@ class Simulation {
 
   Diagnostics diagnostics() const;
   std::vector<ProbeSample> sample_probes() const;
+  std::vector<ProbeSample> sample_at(const std::vector<Vec3>& points) const;
   // Error figures against the analytic solution the scene has, if any.
   std::map<std::string, double> errors() const;
 

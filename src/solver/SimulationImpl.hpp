@@ -281,13 +281,13 @@ void Simulation<D>::evaluate() {
     with_kernel<D>(scene_.kernel, R_, [&](auto W) {
       if (scene_.viscous_term != ViscousTerm::None)
         WallFluxPass<D, decltype(W), true>{walls_.points(), walls_.cells(), W, R_ * R_, a.body, scene_.nu, scene_.rho0,
-                                           scene_.c0, eos_gamma, 0.05 * R_, box_, a.x, a.u, a.rho, a.P, a.grad_rho,
-                                           p_.get(field::ShepardGamma{}), a.du, a.drho}
+                                           scene_.c0, eos_gamma, 0.05 * R_, box_, a.P_min, a.x, a.u, a.rho, a.P,
+                                           a.grad_rho, p_.get(field::ShepardGamma{}), a.du, a.drho}
             .run(n);
       else
         WallFluxPass<D, decltype(W), false>{walls_.points(), walls_.cells(), W, R_ * R_, a.body, scene_.nu, scene_.rho0,
-                                            scene_.c0, eos_gamma, 0.05 * R_, box_, a.x, a.u, a.rho, a.P, a.grad_rho,
-                                            p_.get(field::ShepardGamma{}), a.du, a.drho}
+                                            scene_.c0, eos_gamma, 0.05 * R_, box_, a.P_min, a.x, a.u, a.rho, a.P,
+                                            a.grad_rho, p_.get(field::ShepardGamma{}), a.du, a.drho}
             .run(n);
     });
   }
@@ -521,6 +521,13 @@ Diagnostics Simulation<D>::diagnostics() const {
 // Shepard interpolation at each probe (thesis 2.40-2.41), by a reduction over all particles.
 template <int D>
 std::vector<ProbeSample> Simulation<D>::sample_probes() const {
+  std::vector<Vec3> points;
+  for (const Probe& pr : scene_.probes) points.push_back(pr.position);
+  return sample_at(points);
+}
+
+template <int D>
+std::vector<ProbeSample> Simulation<D>::sample_at(const std::vector<Vec3>& points) const {
   std::vector<ProbeSample> out;
   const int n = static_cast<int>(p_.size());
   const auto x = p_.get(field::Position{});
@@ -529,9 +536,9 @@ std::vector<ProbeSample> Simulation<D>::sample_probes() const {
   const auto P = p_.get(field::Pressure{});
   const auto m = p_.get(field::Mass{});
   const auto box = box_;
-  for (const Probe& pr : scene_.probes) {
+  for (const Vec3& point : points) {
     Vec<D> xp;
-    for (int k = 0; k < D; ++k) xp[k] = pr.position[k];
+    for (int k = 0; k < D; ++k) xp[k] = point[k];
     ProbeSample s;
     with_kernel<D>(scene_.kernel, R_, [&](auto W) {
       // one reduction per quantity: probes are sampled at output times only
@@ -715,6 +722,34 @@ std::map<std::string, double> Simulation<D>::errors() const {
       den += ue * ue;
     }
     e["velocity_l2"] = std::sqrt(num / den);
+  } else if (ref.kind == ReferenceKind::GhiaRe100 || ref.kind == ReferenceKind::GhiaRe1000) {
+    // lid-driven cavity: RMS of (u - u_Ghia)/U on the vertical centreline and of (v - v_Ghia)/U on the
+    // horizontal one, Shepard-interpolated at Ghia et al.'s points (the walls' own points excluded)
+    const int column = ref.kind == ReferenceKind::GhiaRe100 ? 1 : 2;
+    const auto slash = scene_.source_file.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "." : scene_.source_file.substr(0, slash);
+    const double L = ref.length, U = scene_.reference_velocity;
+    for (int line = 0; line < 2; ++line) {
+      const auto table = reference::read_table(dir + (line == 0 ? "/reference/ghia1982_u_vertical_centreline.csv"
+                                                                 : "/reference/ghia1982_v_horizontal_centreline.csv"));
+      std::vector<Vec3> pts;
+      std::vector<double> expect;
+      for (const auto& row : table) {
+        if (row[0] <= 0.0 || row[0] >= 1.0) continue;
+        Vec3 pnt = ref.origin;
+        pnt[line == 0 ? 1 : 0] += row[0] * L;  // along the line
+        pnt[line == 0 ? 0 : 1] += 0.5 * L;     // at the centre
+        pts.push_back(pnt);
+        expect.push_back(row[column] * U);
+      }
+      const auto got = sample_at(pts);
+      double sq = 0;
+      for (std::size_t k = 0; k < pts.size(); ++k) {
+        const double d = (got[k].velocity[line == 0 ? 0 : 1] - expect[k]) / U;
+        sq += d * d;
+      }
+      e[line == 0 ? "centreline_u_rms" : "centreline_v_rms"] = std::sqrt(sq / pts.size());
+    }
   } else if (ref.kind == ReferenceKind::Hydrostatic) {
     // P = rho0 |g| (H - z) for particles deeper than 3 dx; ratio of kinetic to potential energy
     auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.get(field::Position{}));
