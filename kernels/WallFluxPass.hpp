@@ -6,13 +6,11 @@
 //   drho_i += -rho_i s_q ((u_q - u_i) . n_out) W_iq                      (4.25)
 //   du_i   += 2 nu s_q (u_i - u_q) / d_n W_iq,  d_n = (x_i - x_q).n_out   (4.85, no-slip walls, viscous scenes)
 // (plus 2 P_min inside the bracket with the background-pressure correction 2.105),
-// with the wall pressure of the normal flux (4.14), P_p = P_f + rho_f c_f (u_f - u_q).n_out,
-// the fluid state reconstructed at the wall point (MUSCL, 4.30) with the renormalised
-// density gradient and limited by (4.31)-(4.32): rho_f within 1 % of rho_i, the normal
-// relative velocity within 0.1 c_i. P_f = P_i + c_i^2 (rho_f - rho_i) (first order in
-// rho_f - rho_i <= 1 %, exact for the linear law). Then every sum is divided by gamma_i:
+// with the wall pressure P_p of the normal flux (4.14, kernels/WallPressure.hpp).
+// Then every sum is divided by gamma_i:
 //   du_i = g + (fluid + wall sums) / gamma_i,  drho_i = (fluid + wall sums) / gamma_i.
 #include "kernels/NeighbourLoops.hpp"
+#include "kernels/WallPressure.hpp"
 #include "kernels/WallSet.hpp"
 
 namespace ondine {
@@ -25,7 +23,7 @@ struct WallFluxPass {
   double R2;
   Vec<D> body;
   double nu;
-  double rho0, c0, eos_gamma;  // c^2 = c0^2 (rho/rho0)^(gamma-1); gamma = 1 for the linear law
+  WallEos eos;
   double min_dn;               // |d_n| floor of the viscous wall term (0.05 R)
   PeriodicBox<D> box;
   double P_min;                // background pressure (2.105); 0 when the scene does not use it
@@ -41,35 +39,22 @@ struct WallFluxPass {
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<D> xi = load<D>(x, i), ui = load<D>(u, i);
     const double rho_i = rho(i), P_i = P(i);
-    const double c2 = c0 * c0 * kmath::pow(rho_i / rho0, eos_gamma - 1.0);
+    const double c2 = eos.c2(rho_i);
     const double c_i = kmath::sqrt(c2);
     const Vec<D> g_rho = load<D>(grad_rho, i);
     Vec<D> acc = Vec<D>::zero();
     double dr = 0.0;
     for_each_point_within<D>(wall_cells, box, wall.x, xi, R2, [&](const int q, const Vec<D>& xiq, const double r) {
-      {
-        const double Wq = W.value(r) * wall.s(q);
-        const Vec<D> n = load<D>(wall.n_out, q);
-        const Vec<D> uq = load<D>(wall.u, q);
-        // (4.30)-(4.31): rho reconstructed at the wall point, within 1 %
-        double rho_f = rho_i - dot(g_rho, xiq);
-        rho_f = kmath::fmax(0.99 * rho_i, kmath::fmin(rho_f, 1.01 * rho_i));
-        // (4.32) on the wall-normal relative velocity
-        double un = dot(ui - uq, n);
-        un = kmath::fmax(-0.1 * c_i, kmath::fmin(un, 0.1 * c_i));
-        const double P_f = P_i + c2 * (rho_f - rho_i);
-        const double P_p = P_f + rho_f * c_i * un;  // (4.14)
-        // (2.105) shifts P_i + P_j by 2 P_min in the fluid sum; its wall counterpart keeps
-        // the shift from pushing particles into the wall (sum_P w grad W + sum_S s W n = 0)
-        acc += (-(P_p + P_i + 2.0 * P_min) * Wq / rho_i) * n;
-        dr -= rho_i * dot(uq - ui, n) * Wq;
-        if constexpr (Viscous) {
-          if (wall.no_slip(q)) {
-            double dn = dot(xiq, n);  // < 0 on the fluid side
-            if (dn > -min_dn) dn = -min_dn;
-            acc += (2.0 * nu * Wq / dn) * (ui - uq);
-          }
-        }
+      const double Wq = W.value(r) * wall.s(q);
+      const Vec<D> n = load<D>(wall.n_out, q);
+      const Vec<D> uq = load<D>(wall.u, q);
+      const double P_p = normal_flux_pressure<D>(rho_i, P_i, c2, c_i, g_rho, xiq, ui, uq, n);
+      // (2.105) shifts P_i + P_j by 2 P_min in the fluid sum; its wall counterpart keeps
+      // the shift from pushing particles into the wall (sum_P w grad W + sum_S s W n = 0)
+      acc += (-(P_p + P_i + 2.0 * P_min) * Wq / rho_i) * n;
+      dr -= rho_i * dot(uq - ui, n) * Wq;
+      if constexpr (Viscous) {
+        if (wall.no_slip(q)) acc += (2.0 * nu * Wq / fluid_side_dn<D>(xiq, n, min_dn)) * (ui - uq);
       }
     });
     const double inv_gamma = 1.0 / gamma(i);
@@ -101,10 +86,7 @@ struct WallViscousStiffness {
   KOKKOS_INLINE_FUNCTION void operator()(const int i, double& kmax) const {
     double k = 0.0;
     for_each_point_within<D>(wall_cells, box, wall.x, load<D>(x, i), R2, [&](const int q, const Vec<D>& xiq, const double r) {
-      if (!wall.no_slip(q)) return;
-      double dn = dot(xiq, load<D>(wall.n_out, q));
-      if (dn > -min_dn) dn = -min_dn;
-      k += wall.s(q) * W.value(r) / -dn;
+      if (wall.no_slip(q)) k += wall.s(q) * W.value(r) / -fluid_side_dn<D>(xiq, load<D>(wall.n_out, q), min_dn);
     });
     k *= 2.0 * nu / gamma(i);
     if (k > kmax) kmax = k;

@@ -8,6 +8,7 @@
 // Shepard factors the fluid-fluid terms do not cancel pairwise, so it would not
 // be the force on the wall.)
 #include "kernels/NeighbourLoops.hpp"
+#include "kernels/WallPressure.hpp"
 #include "kernels/WallSet.hpp"
 
 namespace ondine {
@@ -17,7 +18,9 @@ struct WallTraction {
   WallPoints<D> wall;
   CellList<D> cells;  // particle cell list
   Kernel W;
-  double R2, nu, rho0, c0, eos_gamma, min_dn;
+  double R2, nu, rho0;
+  WallEos eos;
+  double min_dn;
   PeriodicBox<D> box;
   field_view_t<field::Position, D> x;
   field_view_t<field::Velocity, D> u;
@@ -32,22 +35,14 @@ struct WallTraction {
     double sw = 0.0, sp = 0.0;
     Vec<D> sv = Vec<D>::zero();
     for_each_point_within<D>(cells, box, x, xq, R2, [&](const int i, const Vec<D>& xqi, const double r) {
-      {
-        const Vec<D> xiq = -1.0 * xqi;  // x_i - x_q
-        const double rho_i = rho(i);
-        const double w = m(i) / rho_i * W.value(r);
-        const double c2 = c0 * c0 * kmath::pow(rho_i / rho0, eos_gamma - 1.0), c_i = kmath::sqrt(c2);
-        double rho_f = rho_i - dot(load<D>(grad_rho, i), xiq);
-        rho_f = kmath::fmax(0.99 * rho_i, kmath::fmin(rho_f, 1.01 * rho_i));
-        const Vec<D> ui = load<D>(u, i);
-        double un = dot(ui - uq, n);
-        un = kmath::fmax(-0.1 * c_i, kmath::fmin(un, 0.1 * c_i));
-        sp += w * (P(i) + c2 * (rho_f - rho_i) + rho_f * c_i * un);
-        double dn = dot(xiq, n);
-        if (dn > -min_dn) dn = -min_dn;
-        sv += (-w / dn) * (ui - uq);
-        sw += w;
-      }
+      const Vec<D> xiq = -1.0 * xqi;  // x_i - x_q
+      const double rho_i = rho(i);
+      const double w = m(i) / rho_i * W.value(r);
+      const double c2 = eos.c2(rho_i);
+      const Vec<D> ui = load<D>(u, i);
+      sp += w * normal_flux_pressure<D>(rho_i, P(i), c2, kmath::sqrt(c2), load<D>(grad_rho, i), xiq, ui, uq, n);
+      sv += (-w / fluid_side_dn<D>(xiq, n, min_dn)) * (ui - uq);
+      sw += w;
     });
     const double s = wall.s(q);
     for (int k = 0; k < D; ++k) {

@@ -110,12 +110,7 @@ void Simulation<D>::fill() {
   const double dx = s.dx;
   const double volume = std::pow(dx, D);
   double g[D];
-  double gnorm = 0;
-  for (int k = 0; k < D; ++k) {
-    g[k] = s.gravity[k] + s.body_force[k];
-    gnorm += g[k] * g[k];
-  }
-  gnorm = std::sqrt(gnorm);
+  for (int k = 0; k < D; ++k) g[k] = s.gravity[k] + s.body_force[k];
   std::int64_t offset = 0;
   for (const FluidBlock& b : s.blocks) {
     int cnt[D];
@@ -155,7 +150,6 @@ void Simulation<D>::fill() {
     f.run(nb);
     offset += nb;
   }
-  (void)gnorm;
 }
 
 // Drops lattice points outside the fluid region or closer than dx/2 to a wall,
@@ -280,13 +274,13 @@ void Simulation<D>::evaluate() {
     const double eos_gamma = scene_.eos == EosLaw::Tait ? scene_.tait_gamma : 1.0;
     with_kernel<D>(scene_.kernel, R_, [&](auto W) {
       if (scene_.viscous_term != ViscousTerm::None)
-        WallFluxPass<D, decltype(W), true>{walls_.points(), walls_.cells(), W, R_ * R_, a.body, scene_.nu, scene_.rho0,
-                                           scene_.c0, eos_gamma, 0.05 * R_, box_, a.P_min, a.x, a.u, a.rho, a.P,
+        WallFluxPass<D, decltype(W), true>{walls_.points(), walls_.cells(), W, R_ * R_, a.body, scene_.nu,
+                                           WallEos{scene_.rho0, scene_.c0, eos_gamma}, 0.05 * R_, box_, a.P_min, a.x, a.u, a.rho, a.P,
                                            a.grad_rho, p_.get(field::ShepardGamma{}), a.du, a.drho}
             .run(n);
       else
-        WallFluxPass<D, decltype(W), false>{walls_.points(), walls_.cells(), W, R_ * R_, a.body, scene_.nu, scene_.rho0,
-                                            scene_.c0, eos_gamma, 0.05 * R_, box_, a.P_min, a.x, a.u, a.rho, a.P,
+        WallFluxPass<D, decltype(W), false>{walls_.points(), walls_.cells(), W, R_ * R_, a.body, scene_.nu,
+                                            WallEos{scene_.rho0, scene_.c0, eos_gamma}, 0.05 * R_, box_, a.P_min, a.x, a.u, a.rho, a.P,
                                             a.grad_rho, p_.get(field::ShepardGamma{}), a.du, a.drho}
             .run(n);
     });
@@ -573,8 +567,8 @@ std::vector<WallForce> Simulation<D>::wall_forces() {
   Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace> traction("ondine::NFM::traction", nq, 2 * D);
   with_kernel<D>(scene_.kernel, R_, [&](auto W) {
     Kokkos::parallel_for("ondine::NFM::wall_traction", Kokkos::RangePolicy<ExecSpace>(0, nq),
-                         WallTraction<D, decltype(W)>{walls_.points(), cells_, W, R_ * R_, nu, scene_.rho0, scene_.c0,
-                                                      eos_gamma, 0.05 * R_, box_, p_.get(field::Position{}),
+                         WallTraction<D, decltype(W)>{walls_.points(), cells_, W, R_ * R_, nu, scene_.rho0,
+                                                      WallEos{scene_.rho0, scene_.c0, eos_gamma}, 0.05 * R_, box_, p_.get(field::Position{}),
                                                       p_.get(field::Velocity{}), p_.get(field::Density{}),
                                                       p_.get(field::Pressure{}), p_.get(field::Mass{}),
                                                       p_.get(field::DensityGradient{}), traction});
