@@ -12,12 +12,14 @@ using ExecSpace = Kokkos::DefaultExecutionSpace;
 using MemSpace = ExecSpace::memory_space;
 
 namespace field {
-#define ONDINE_FIELD(Name, label_, value_t, vector_)  \
-  struct Name {                                        \
-    static constexpr const char* label = label_;       \
-    using value_type = value_t;                        \
-    static constexpr bool is_vector = vector_;         \
+#define ONDINE_FIELD_(Name, label_, value_t, vector_, output_) \
+  struct Name {                                               \
+    static constexpr const char* label = label_;              \
+    using value_type = value_t;                               \
+    static constexpr bool is_vector = vector_;                \
+    static constexpr bool output = output_;                   \
   }
+#define ONDINE_FIELD(Name, label_, value_t, vector_) ONDINE_FIELD_(Name, label_, value_t, vector_, true)
 ONDINE_FIELD(Position, "position", double, true);
 ONDINE_FIELD(Velocity, "velocity", double, true);
 ONDINE_FIELD(Density, "density", double, false);
@@ -32,7 +34,17 @@ ONDINE_FIELD(DensityGradient, "density_gradient", double, true);
 ONDINE_FIELD(ShepardGamma, "shepard_gamma", double, false);
 // Free-surface flag from the NFM renormalisation matrix and normal (4.86)-(4.87): 1 on the surface.
 ONDINE_FIELD(FreeSurface, "free_surface", double, false);
+// Integrator stage storage (not written to snapshots): the state y0 at the start
+// of the step and the RK4 weighted sum of the stage derivatives. Particle fields,
+// so that they follow a particle that changes rank in the middle of a step.
+ONDINE_FIELD_(StagePosition, "stage_position", double, true, false);
+ONDINE_FIELD_(StageVelocity, "stage_velocity", double, true, false);
+ONDINE_FIELD_(StageDensity, "stage_density", double, false, false);
+ONDINE_FIELD_(StagePositionSum, "stage_position_sum", double, true, false);
+ONDINE_FIELD_(StageVelocitySum, "stage_velocity_sum", double, true, false);
+ONDINE_FIELD_(StageDensitySum, "stage_density_sum", double, false, false);
 #undef ONDINE_FIELD
+#undef ONDINE_FIELD_
 }  // namespace field
 
 template <class Tag, int D>

@@ -100,9 +100,15 @@ struct KeepGather {
 }  // namespace ondine
 
 namespace ondine {
-// id(i) = i
+// id(i) = offset + i
 struct Iota {
   Kokkos::View<std::int64_t*, MemSpace> id;
-  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { id(i) = i; }
+  std::int64_t offset = 0;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { id(i) = offset + i; }
+};
+// index(i) = i
+struct Iota32 {
+  Kokkos::View<int*, MemSpace> index;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { index(i) = i; }
 };
 }  // namespace ondine

@@ -1,6 +1,7 @@
 #pragma once
 // Initial state of one fluid block: a lattice of cnt[0] x ... x cnt[D-1] particles
-// at (k + 1/2) dx from the block's low corner, numbered from `offset`, with its
+// at (k + 1/2) dx from the block's low corner, numbered from `offset` (a
+// distributed run fills its share of the points, [first, first + n)), with its
 // initial velocity (uniform, or the Taylor-Green vortex u = -U cos kx sin ky,
 // v = U sin kx cos ky) and pressure (zero, hydrostatic rho0 g.(x - x_top) below
 // the free surface, or Taylor-Green -rho0 U^2/4 (cos 2kx + cos 2ky)); the density
@@ -22,6 +23,8 @@ struct InitialFill {
   field_view_t<field::Mass, D> m;
   field_view_t<field::GlobalId, D> id;
   std::int64_t offset;  // global index of the block's first particle
+  std::int64_t first = 0;  // lattice index (within the block) of the first point filled
+  std::int64_t dst = 0;    // storage index of the first point filled
   int cnt[D];
   double lo[D];
   double dx, volume;  // volume = dx^D
@@ -35,8 +38,8 @@ struct InitialFill {
   double rho0, c0, gam;
 
   KOKKOS_INLINE_FUNCTION void operator()(const std::int64_t a) const {
-    const std::int64_t i = offset + a;
-    std::int64_t rest = a;
+    const std::int64_t i = dst + a;
+    std::int64_t rest = first + a;
     double pos[D];
     for (int k = 0; k < D; ++k) {
       pos[k] = lo[k] + (static_cast<double>(rest % cnt[k]) + 0.5) * dx;
@@ -63,7 +66,7 @@ struct InitialFill {
     const double r = tait ? rho0 * kmath::pow(1.0 + gam * P / (rho0 * c0 * c0), 1.0 / gam) : rho0 + P / (c0 * c0);
     rho(i) = r;
     m(i) = r * volume;
-    id(i) = i;
+    id(i) = offset + first + a;
   }
 
   void run(std::int64_t n) const {

@@ -56,9 +56,10 @@ struct WallTraction {
 struct WallTractionSum {
   Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace> traction;
   Kokkos::View<int*, MemSpace> wall;
+  Kokkos::View<int*, MemSpace> counted;  // 1 where this rank counts the point
   int which, component;
   KOKKOS_INLINE_FUNCTION void operator()(const int q, double& F) const {
-    if (wall(q) == which) F += traction(q, component);
+    if (wall(q) == which && counted(q)) F += traction(q, component);
   }
 };
 

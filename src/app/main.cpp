@@ -9,12 +9,13 @@
 
 #include "app/BuildInfo.hpp"
 #include "app/Validate.hpp"
+#include "io/Checkpoint.hpp"
 #include "scene/CaseFile.hpp"
 #include "solver/Runner.hpp"
 
 namespace {
 
-void on_signal(int) { ondine::request_stop(); }
+void on_signal(int sig) { ondine::request_stop(sig); }
 
 std::string version_text() {
   std::string b;
@@ -23,18 +24,19 @@ std::string version_text() {
          "; default execution space: " + ondine::default_backend() + ")\n";
 }
 
-int run_app(int argc, char** argv, int ranks) {
+int run_app(int argc, char** argv, int ranks, int rank) {
   CLI::App app{"Ondine: data-parallel SPH for free-surface hydrodynamics (Kokkos)", "ondine"};
   app.set_version_flag("--version", version_text());
   app.require_subcommand(1);
   auto* run = app.add_subcommand("run", "run a case file to completion");
-  std::string case_file, out_dir;
+  std::string case_file, out_dir, restart;
   std::vector<std::string> sets;
   bool quiet = false;
   run->add_option("CASE", case_file, "YAML case file (see docs/case-file.md)")->required();
   run->add_option("--out", out_dir, "output folder (default: out/<case name>)");
   run->add_option("--set", sets, "override a case key, e.g. --set discretisation.dx=0.01 (repeatable)");
   run->add_flag("--quiet", quiet, "no progress line");
+  run->add_option("--restart", restart, "continue from a checkpoint (OUT/checkpoint.h5), on any number of ranks");
   auto* validate = app.add_subcommand("validate", "run the validation cases over a resolution ladder (docs/validation.md)");
   ondine::ValidateOptions vopt;
   validate->add_option("--case", vopt.cases, "case name (repeatable; default: all)");
@@ -62,25 +64,36 @@ int run_app(int argc, char** argv, int ranks) {
     std::fprintf(stderr, "ondine: error: %s\n", e.what());
     return 2;
   }
-  if (ranks > 1) {
-    std::fprintf(stderr, "ondine: error: distributed runs (%d ranks) are not implemented yet; run on one rank\n", ranks);
-    return 2;
-  }
   ondine::RunOptions opt;
   opt.out_dir = out_dir.empty() ? "out/" + scene.name : out_dir;
-  opt.progress = !quiet;
-  opt.ranks = ranks;
-  std::fprintf(stderr, "ondine: case %s (%dD), %zu particles, dx = %g m, c0 = %g m/s, backend %s x %d -> %s\n",
-               scene.name.c_str(), scene.dimension, ondine::count_particles(scene), scene.dx, scene.c0,
-               ondine::default_backend().c_str(), ondine::backend_threads(), opt.out_dir.c_str());
+  opt.progress = !quiet && rank == 0;
+  opt.restart = restart;
+  if (rank == 0)
+    std::fprintf(stderr, "ondine: case %s (%dD), dx = %g m, c0 = %g m/s, %d rank%s x backend %s x %d -> %s%s%s\n",
+                 scene.name.c_str(), scene.dimension, scene.dx, scene.c0, ranks, ranks > 1 ? "s" : "",
+                 ondine::default_backend().c_str(), ondine::backend_threads(), opt.out_dir.c_str(),
+                 restart.empty() ? "" : ", restart from ", restart.c_str());
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
-  const ondine::RunReport r = ondine::run_scene(scene, opt);
-  std::fprintf(stderr, "ondine: %s: %lld steps, t = %g s, %.2f s wall, %.3g particle-steps/s\n", r.status.c_str(),
-               static_cast<long long>(r.steps), r.simulated_time, r.wall_seconds,
-               r.wall_seconds > 0 ? r.particles * static_cast<double>(r.steps) / r.wall_seconds : 0.0);
-  for (const auto& [name, value] : r.errors) std::fprintf(stderr, "  %s = %.6g\n", name.c_str(), value);
-  return r.status == "diverged" ? 3 : 0;
+  ondine::RunReport r;
+  try {
+    r = ondine::run_scene(scene, opt);
+  } catch (const ondine::CheckpointError& e) {
+    if (rank == 0) std::fprintf(stderr, "ondine: error: cannot restart: %s\n", e.what());
+    return 2;
+  }
+  if (rank == 0) {
+    std::fprintf(stderr, "ondine: %s: %zu particles, %lld steps, t = %g s, %.2f s wall, %.3g particle-steps/s\n", r.status.c_str(),
+                 r.particles, static_cast<long long>(r.steps), r.simulated_time, r.wall_seconds,
+                 r.wall_seconds > 0 ? r.particles * static_cast<double>(r.steps) / r.wall_seconds : 0.0);
+    for (const auto& [name, value] : r.errors) std::fprintf(stderr, "  %s = %.6g\n", name.c_str(), value);
+    if (r.status == "interrupted")
+      std::fprintf(stderr, "ondine: stopped by signal %d; continue with: ondine run %s --restart %s/checkpoint.h5\n", r.signal,
+                   case_file.c_str(), opt.out_dir.c_str());
+  }
+  if (r.status == "diverged") return 3;
+  if (r.status == "interrupted") return 128 + r.signal;
+  return 0;
 }
 
 }  // namespace
@@ -88,12 +101,13 @@ int run_app(int argc, char** argv, int ranks) {
 int main(int argc, char** argv) {
   int provided = 0;
   MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
-  int ranks = 1;
+  int ranks = 1, rank = 0;
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   int rc = 0;
   Kokkos::initialize(argc, argv);
   try {
-    rc = run_app(argc, argv, ranks);
+    rc = run_app(argc, argv, ranks, rank);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ondine: error: %s\n", e.what());
     rc = 1;

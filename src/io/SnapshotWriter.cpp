@@ -8,16 +8,16 @@
 #include <stdexcept>
 
 #include "io/AtomicFile.hpp"
+#include "io/H5Collective.hpp"
 
 namespace ondine {
 
 namespace {
 
-// Packs a field into a host row-major N x 3 (vectors) or N (scalars) double array;
-// the transposition runs on the device.
+// Packs the first n values of a field into a host row-major n x 3 (vectors) or n
+// (scalars) double array; the transposition runs on the device.
 template <int D, class V>
-std::vector<double> to_host_rows(const V& v, int& comps) {
-  const int n = static_cast<int>(v.extent(0));
+std::vector<double> to_host_rows(const V& v, int n, int& comps) {
   if constexpr (V::rank == 1) {
     comps = 1;
     Kokkos::View<double*, MemSpace> packed("ondine::Snapshot::pack", n);
@@ -42,57 +42,49 @@ void check(herr_t status, const std::string& what) {
   if (status < 0) throw std::runtime_error("HDF5: " + what + " failed");
 }
 
-void write_attribute(hid_t file, const char* name, hid_t type, const void* value) {
-  const hid_t space = H5Screate(H5S_SCALAR);
-  const hid_t attr = H5Acreate2(file, name, type, space, H5P_DEFAULT, H5P_DEFAULT);
-  if (attr < 0) throw std::runtime_error(std::string("HDF5: cannot create attribute ") + name);
-  check(H5Awrite(attr, type, value), std::string("writing attribute ") + name);
-  H5Aclose(attr);
-  H5Sclose(space);
-}
-
 }  // namespace
 
-SnapshotWriter::SnapshotWriter(std::string dir, std::string case_name) : dir_(std::move(dir)), name_(std::move(case_name)) {}
+SnapshotWriter::SnapshotWriter(std::string dir, std::string case_name, Communicator comm)
+    : dir_(std::move(dir)), name_(std::move(case_name)), comm_(comm) {}
 
 std::string SnapshotWriter::index_path() const { return dir_ + "/" + name_ + ".xmf"; }
 
-template <int D>
-void SnapshotWriter::write(const ParticleSet<D>& p, double time, std::int64_t step) {
+std::string SnapshotWriter::file_name(std::size_t index) const {
   std::ostringstream fname;
-  fname << name_ << "_" << std::setw(6) << std::setfill('0') << entries_.size() << ".h5";
-  const std::string path = dir_ + "/" + fname.str();
-  const std::string tmp = temporary_name(path);
-  SnapshotEntry entry{fname.str(), time, step, p.size(), {}};
+  fname << name_ << "_" << std::setw(6) << std::setfill('0') << index << ".h5";
+  return fname.str();
+}
 
-  const hid_t file = H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file < 0) throw std::runtime_error("HDF5: cannot create " + tmp);
-  try {
-    write_attribute(file, "time", H5T_NATIVE_DOUBLE, &time);
-    write_attribute(file, "step", H5T_NATIVE_INT64, &step);
-    const int dim = D;
-    write_attribute(file, "dimension", H5T_NATIVE_INT, &dim);
-    p.for_each_allocated([&](auto tag, const auto& view) {
-      int comps = 1;
-      const std::vector<double> rows = to_host_rows<D>(view, comps);
-      const hsize_t dims[2] = {static_cast<hsize_t>(p.size()), static_cast<hsize_t>(comps)};
-      const hid_t space = H5Screate_simple(comps == 1 ? 1 : 2, dims, nullptr);
-      const hid_t set = H5Dcreate2(file, decltype(tag)::label, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-      if (set < 0) throw std::runtime_error(std::string("HDF5: cannot create dataset ") + decltype(tag)::label);
-      if (!rows.empty()) check(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, rows.data()), "writing a dataset");
-      H5Dclose(set);
-      H5Sclose(space);
-      entry.fields.emplace_back(decltype(tag)::label, comps);
-    });
-  } catch (...) {
-    H5Fclose(file);
-    std::remove(tmp.c_str());
-    throw;
-  }
-  check(H5Fclose(file), "closing " + tmp);
-  commit_file(tmp, path);
+template <int D>
+void SnapshotWriter::write(const ParticleSet<D>& p, double time, std::int64_t step, std::int64_t owned) {
+  const std::string fname = file_name(entries_.size());
+  const int n = static_cast<int>(owned < 0 ? static_cast<std::int64_t>(p.size()) : owned);
+  H5CollectiveFile file(dir_ + "/" + fname, comm_, n);
+  SnapshotEntry entry{fname, time, step, static_cast<std::size_t>(file.global_rows()), {}};
+  file.attribute("time", time);
+  file.attribute("step", step);
+  file.attribute("dimension", D);
+  p.for_each_allocated([&](auto tag, const auto& view) {
+    if (!decltype(tag)::output) return;
+    int comps = 1;
+    const std::vector<double> rows = to_host_rows<D>(view, n, comps);
+    file.dataset(decltype(tag)::label, rows, comps);
+    entry.fields.emplace_back(decltype(tag)::label, comps);
+  });
+  file.commit();
   entries_.push_back(entry);
-  write_index();
+  if (comm_.rank() == 0) write_index();
+}
+
+void SnapshotWriter::resume(std::size_t count) {
+  entries_.clear();
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::string fname = file_name(k);
+    const SnapshotData d = read_snapshot(dir_ + "/" + fname, false);
+    SnapshotEntry e{fname, d.time, d.step, d.particles, {}};
+    for (std::size_t f = 0; f < d.names.size(); ++f) e.fields.emplace_back(d.names[f], d.components[f]);
+    entries_.push_back(e);
+  }
 }
 
 void SnapshotWriter::write_index() const {
@@ -120,7 +112,7 @@ void SnapshotWriter::write_index() const {
   write_text_atomically(index_path(), x.str());
 }
 
-SnapshotData read_snapshot(const std::string& path) {
+SnapshotData read_snapshot(const std::string& path, bool with_values) {
   SnapshotData d;
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (file < 0) throw std::runtime_error(path + ": not a readable HDF5 snapshot");
@@ -142,7 +134,7 @@ SnapshotData read_snapshot(const std::string& path) {
     const hid_t space = H5Dget_space(set);
     hsize_t dims[2] = {0, 1};
     const int rank = H5Sget_simple_extent_dims(space, dims, nullptr);
-    std::vector<double> v(dims[0] * (rank == 2 ? dims[1] : 1));
+    std::vector<double> v(with_values ? dims[0] * (rank == 2 ? dims[1] : 1) : 0);
     if (!v.empty()) check(H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), "reading " + std::string(name));
     d.names.emplace_back(name);
     d.components.push_back(rank == 2 ? static_cast<int>(dims[1]) : 1);
@@ -155,7 +147,7 @@ SnapshotData read_snapshot(const std::string& path) {
   return d;
 }
 
-template void SnapshotWriter::write<2>(const ParticleSet<2>&, double, std::int64_t);
-template void SnapshotWriter::write<3>(const ParticleSet<3>&, double, std::int64_t);
+template void SnapshotWriter::write<2>(const ParticleSet<2>&, double, std::int64_t, std::int64_t);
+template void SnapshotWriter::write<3>(const ParticleSet<3>&, double, std::int64_t, std::int64_t);
 
 }  // namespace ondine

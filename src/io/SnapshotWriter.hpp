@@ -3,10 +3,13 @@
 // One file per snapshot, <dir>/<case>_<NNNNNN>.h5, holding one dataset per
 // allocated field (vectors as N x 3, z = 0 in 2D, so ParaView sees XYZ), and
 // attributes time, step, dimension. The index <dir>/<case>.xmf is rewritten after
-// each snapshot. Both go through a temporary name and a rename.
+// each snapshot. Both go through a temporary name and a rename. On several ranks
+// the file is written collectively (io/H5Collective.hpp), each rank its owned
+// particles, and rank 0 writes the index: the same files as a one-rank run.
 #include <string>
 #include <vector>
 
+#include "parallel/Communicator.hpp"
 #include "particles/ParticleSet.hpp"
 
 namespace ondine {
@@ -21,17 +24,22 @@ struct SnapshotEntry {
 
 class SnapshotWriter {
  public:
-  SnapshotWriter(std::string dir, std::string case_name);
+  SnapshotWriter(std::string dir, std::string case_name, Communicator comm = Communicator());
 
+  // the first `owned` particles of p (all of them by default)
   template <int D>
-  void write(const ParticleSet<D>& p, double time, std::int64_t step);
+  void write(const ParticleSet<D>& p, double time, std::int64_t step, std::int64_t owned = -1);
+  // a restarted run: takes the first `count` snapshots already in the folder as its own
+  void resume(std::size_t count);
 
   const std::vector<SnapshotEntry>& entries() const { return entries_; }
   std::string index_path() const;
 
  private:
   void write_index() const;
+  std::string file_name(std::size_t index) const;
   std::string dir_, name_;
+  Communicator comm_;
   std::vector<SnapshotEntry> entries_;
 };
 
@@ -45,6 +53,6 @@ struct SnapshotData {
   std::vector<int> components;
   std::size_t particles = 0;
 };
-SnapshotData read_snapshot(const std::string& path);
+SnapshotData read_snapshot(const std::string& path, bool with_values = true);  // false: names and shapes only
 
 }  // namespace ondine

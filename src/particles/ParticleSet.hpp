@@ -19,7 +19,9 @@ class ParticleSet {
  public:
   using Fields = std::tuple<field::Position, field::Velocity, field::Density, field::Pressure,
                             field::Mass, field::GlobalId, field::Acceleration, field::DensityRate,
-                            field::DensityGradient, field::ShepardGamma, field::FreeSurface>;
+                            field::DensityGradient, field::ShepardGamma, field::FreeSurface,
+                            field::StagePosition, field::StageVelocity, field::StageDensity,
+                            field::StagePositionSum, field::StageVelocitySum, field::StageDensitySum>;
   static constexpr int dimension = D;
 
   explicit ParticleSet(std::size_t n = 0) : n_(n) {}

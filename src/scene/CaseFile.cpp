@@ -236,7 +236,7 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
   const Reader r(path, apply_overrides(root, overrides));
 
   r.only_keys(root, "", {"name", "dimension", "domain", "fluid", "discretisation", "fluid_blocks", "walls", "forces",
-                         "scheme", "time", "probes", "reference"});
+                         "scheme", "time", "probes", "reference", "parallel", "checkpoint"});
   Scene s;
   s.source_file = path;
   if (root["name"]) {
@@ -522,6 +522,22 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
   s.output_interval = r.positive(r.required(t, "time", "output_interval"), "time.output_interval", " (s)");
   if (t["damping"]) s.damping_time = r.non_negative(t["damping"], "time.damping", " (s)");
   if (t["max_steps"]) s.max_steps = r.integer(t["max_steps"], "time.max_steps", 1, 1LL << 50);
+
+  // distributed runs and checkpoints (docs/parallel.md)
+  if (const YAML::Node par = root["parallel"]) {
+    r.only_keys(par, "parallel", {"rebalance_threshold"});
+    if (par["rebalance_threshold"]) {
+      s.rebalance_threshold = r.positive(par["rebalance_threshold"], "parallel.rebalance_threshold", "");
+      if (s.rebalance_threshold > 1)
+        r.fail(par["rebalance_threshold"], "parallel.rebalance_threshold", "expected a value in (0, 1] (tau = min work / max work)");
+    }
+  }
+  if (const YAML::Node cp = root["checkpoint"]) {
+    r.only_keys(cp, "checkpoint", {"every_steps", "every_wall_seconds"});
+    if (cp["every_steps"]) s.checkpoint_every_steps = r.integer(cp["every_steps"], "checkpoint.every_steps", 0, 1LL << 50);
+    if (cp["every_wall_seconds"])
+      s.checkpoint_every_wall_seconds = r.non_negative(cp["every_wall_seconds"], "checkpoint.every_wall_seconds", " (s)");
+  }
 
   // probes
   if (const YAML::Node pr = root["probes"]) {

@@ -112,6 +112,12 @@ struct Scene {
   double damping_time = 0;       // s: initial relaxation, u *= exp(-dt / (damping_time / 10)) while t < damping_time
   std::vector<Probe> probes;
   Reference reference;
+
+  // distributed runs: rebalance when tau = min work / max work (5.30) falls below this
+  double rebalance_threshold = 0.9;
+  // checkpoints (besides the one at a clean stop and at the end): 0 = never
+  std::int64_t checkpoint_every_steps = 0;
+  double checkpoint_every_wall_seconds = 0;
 };
 
 std::string to_string(KernelType);

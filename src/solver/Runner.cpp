@@ -13,7 +13,9 @@
 
 #include "app/BuildInfo.hpp"
 #include "io/AtomicFile.hpp"
+#include "io/Checkpoint.hpp"
 #include "io/SnapshotWriter.hpp"
+#include "solver/RunOutput.hpp"
 #include "solver/References.hpp"
 #include "solver/Simulation.hpp"
 
@@ -21,7 +23,7 @@ namespace ondine {
 
 namespace {
 
-std::atomic<bool> stop_requested{false};
+std::atomic<int> stop_signal{-1};
 
 using Clock = std::chrono::steady_clock;
 
@@ -35,74 +37,105 @@ template <int D>
 RunReport run(const Scene& scene, const RunOptions& opt) {
   namespace fs = std::filesystem;
   const auto wall0 = Clock::now();
-  Simulation<D> sim(scene);
-  fs::create_directories(opt.out_dir);
-  SnapshotWriter snapshots(opt.out_dir, scene.name);
-
-  std::ostringstream diag_csv, probe_csv;
-  diag_csv << "time,step,dt,mass,momentum_x,momentum_y" << (D == 3 ? ",momentum_z" : "")
-           << ",kinetic_energy,max_speed,rho_min,rho_max,outside_domain\n";
-  probe_csv << "time,step";
-  for (const Probe& p : scene.probes) {
-    probe_csv << "," << p.name << ".pressure," << p.name << ".density";
-    for (int k = 0; k < D; ++k) probe_csv << "," << p.name << ".u" << "xyz"[k];
+  const Communicator comm;
+  const bool root = comm.rank() == 0;
+  CheckpointSlice restart;
+  const bool restarting = !opt.restart.empty();
+  if (restarting) {
+    restart = read_checkpoint(opt.restart, comm);
+    const CheckpointHeader& h = restart.header;
+    if (h.dimension != D || std::abs(h.dx - scene.dx) > 1e-12 * scene.dx)
+      throw CheckpointError(opt.restart + ": written by a " + std::to_string(h.dimension) + "D run with dx = " + std::to_string(h.dx) +
+                            " m; the case has dimension " + std::to_string(D) + " and dx = " + std::to_string(scene.dx) + " m");
   }
-  probe_csv << "\n";
-  diag_csv << std::setprecision(12);
-  probe_csv << std::setprecision(12);
+  Simulation<D> sim(scene, restarting ? &restart : nullptr);
+  if (root) fs::create_directories(opt.out_dir);
+  comm.barrier();
+  SnapshotWriter snapshots(opt.out_dir, scene.name, comm);
+  const double t_start = sim.time();
+
+  CsvSeries diag_csv(opt.out_dir + "/diagnostics.csv", root), probe_csv(opt.out_dir + "/probes.csv", root),
+      wall_csv(opt.out_dir + "/walls.csv", root), front_csv(opt.out_dir + "/front.csv", root);
+  diag_csv.text() << "time,step,dt,mass,momentum_x,momentum_y" << (D == 3 ? ",momentum_z" : "")
+                  << ",kinetic_energy,max_speed,rho_min,rho_max,outside_domain,balance\n";
+  probe_csv.text() << "time,step";
+  for (const Probe& p : scene.probes) {
+    probe_csv.text() << "," << p.name << ".pressure," << p.name << ".density";
+    for (int k = 0; k < D; ++k) probe_csv.text() << "," << p.name << ".u" << "xyz"[k];
+  }
+  probe_csv.text() << "\n";
 
   RunReport report;
-  report.particles = sim.size();
+  report.particles = static_cast<std::size_t>(sim.global_size());
   double max_rho_dev = 0, max_ke = 0;
   std::int64_t max_outside = 0;
   double last_dt = 0;
   bool diverged = false;
-  std::ostringstream wall_csv, front_csv;
-  wall_csv << std::setprecision(12) << "time,step";
+  wall_csv.text() << "time,step";
   if (sim.has_walls())
     for (const WallForce& f : sim.wall_forces())
       for (const char* part : {"pressure", "viscous"})
-        for (int k = 0; k < D; ++k) wall_csv << "," << f.name << "." << part << "_f" << "xyz"[k];
-  wall_csv << "\n";
+        for (int k = 0; k < D; ++k) wall_csv.text() << "," << f.name << "." << part << "_f" << "xyz"[k];
+  wall_csv.text() << "\n";
   const bool dam_break = scene.reference.kind == ReferenceKind::MartinMoyce;
   const double a = scene.reference.length;
   const double g = std::abs(scene.gravity[1]);
   std::vector<std::pair<double, double>> front;  // (T, Z)
-  front_csv << std::setprecision(8) << "T,Z,Z_experiment\n";
+  front_csv.text().precision(8);
+  front_csv.text() << "T,Z,Z_experiment\n";
+  if (restarting) {
+    // the series of the earlier run up to the restart time, and the figures taken over them
+    snapshots.resume(static_cast<std::size_t>(restart.header.snapshots));
+    if (diag_csv.resume(t_start))
+      for (const auto& row : diag_csv.resumed_rows()) {
+        const std::size_t c = 6 + (D == 3);  // kinetic_energy
+        if (row.size() < c + 5) continue;
+        max_ke = std::max(max_ke, row[c]);
+        max_rho_dev = std::max({max_rho_dev, std::abs(row[c + 2] / scene.rho0 - 1), std::abs(row[c + 3] / scene.rho0 - 1)});
+        max_outside = std::max(max_outside, static_cast<std::int64_t>(row[c + 4]));
+      }
+    probe_csv.resume(t_start);
+    wall_csv.resume(t_start);
+    if (dam_break && front_csv.resume(t_start * std::sqrt(2 * g / a)))
+      for (const auto& row : front_csv.resumed_rows())
+        if (row.size() >= 2) front.emplace_back(row[0], row[1]);
+  }
   auto record = [&]() {
     sim.prepare_output();
-    snapshots.write(sim.particles(), sim.time(), sim.steps());
+    snapshots.write(sim.particles(), sim.time(), sim.steps(), static_cast<std::int64_t>(sim.size()));
     if (sim.has_walls()) {
-      wall_csv << sim.time() << "," << sim.steps();
-      for (const WallForce& f : sim.wall_forces()) {
-        for (int k = 0; k < D; ++k) wall_csv << "," << f.pressure[k];
-        for (int k = 0; k < D; ++k) wall_csv << "," << f.viscous[k];
+      const auto forces = sim.wall_forces();
+      wall_csv.text() << sim.time() << "," << sim.steps();
+      for (const WallForce& f : forces) {
+        for (int k = 0; k < D; ++k) wall_csv.text() << "," << f.pressure[k];
+        for (int k = 0; k < D; ++k) wall_csv.text() << "," << f.viscous[k];
       }
-      wall_csv << "\n";
-      write_text_atomically(opt.out_dir + "/walls.csv", wall_csv.str());
+      wall_csv.text() << "\n";
+      wall_csv.flush();
     }
     if (dam_break) {
       const double T = sim.time() * std::sqrt(2 * g / a);
       const double Z = (sim.front_position() - scene.reference.origin[0]) / a;
       front.emplace_back(T, Z);
-      front_csv << T << "," << Z << "," << reference::interpolate(reference::martin_moyce_front(), T) << "\n";
-      write_text_atomically(opt.out_dir + "/front.csv", front_csv.str());
+      front_csv.text() << T << "," << Z << "," << reference::interpolate(reference::martin_moyce_front(), T) << "\n";
+      front_csv.flush();
     }
     const Diagnostics d = sim.diagnostics();
-    diag_csv << sim.time() << "," << sim.steps() << "," << last_dt << "," << d.mass;
-    for (int k = 0; k < D; ++k) diag_csv << "," << d.momentum[k];
-    diag_csv << "," << d.kinetic_energy << "," << d.max_speed << "," << d.rho_min << "," << d.rho_max << ","
-             << d.outside_domain << "\n";
+    diag_csv.text() << sim.time() << "," << sim.steps() << "," << last_dt << "," << d.mass;
+    for (int k = 0; k < D; ++k) diag_csv.text() << "," << d.momentum[k];
+    diag_csv.text() << "," << d.kinetic_energy << "," << d.max_speed << "," << d.rho_min << "," << d.rho_max << ","
+                    << d.outside_domain << "," << sim.balance() << "\n";
     if (!scene.probes.empty()) {
-      probe_csv << sim.time() << "," << sim.steps();
-      for (const ProbeSample& s : sim.sample_probes()) {
-        probe_csv << "," << s.pressure << "," << s.density;
-        for (int k = 0; k < D; ++k) probe_csv << "," << s.velocity[k];
+      const auto samples = sim.sample_probes();
+      probe_csv.text() << sim.time() << "," << sim.steps();
+      for (const ProbeSample& s : samples) {
+        probe_csv.text() << "," << s.pressure << "," << s.density;
+        for (int k = 0; k < D; ++k) probe_csv.text() << "," << s.velocity[k];
       }
-      probe_csv << "\n";
-      write_text_atomically(opt.out_dir + "/probes.csv", probe_csv.str());
+      probe_csv.text() << "\n";
+      probe_csv.flush();
     }
-    write_text_atomically(opt.out_dir + "/diagnostics.csv", diag_csv.str());
+    diag_csv.flush();
     diverged = !d.finite;
     // stability figures over the whole run (validation.md): density range, kinetic energy, escapes
     max_rho_dev = std::max({max_rho_dev, std::abs(d.rho_max / scene.rho0 - 1), std::abs(d.rho_min / scene.rho0 - 1)});
@@ -110,12 +143,40 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
     max_outside = std::max(max_outside, d.outside_domain);
   };
 
-  record();
+  // checkpoints: every N steps, every T wall seconds, at a clean stop and at the end
+  const std::string checkpoint_path = opt.out_dir + "/checkpoint.h5";
+  double checkpoint_seconds = 0;
+  int checkpoints = 0;
+  auto last_checkpoint = Clock::now();
+  auto checkpoint = [&]() {
+    const auto c0 = Clock::now();
+    CheckpointHeader h;
+    h.case_name = scene.name;
+    h.dimension = D;
+    h.dx = scene.dx;
+    h.time = sim.time();
+    h.step = sim.steps();
+    h.snapshots = static_cast<std::int64_t>(snapshots.entries().size());
+    const Diagnostics& d0 = sim.initial_diagnostics();
+    h.initial_mass = d0.mass;
+    for (int k = 0; k < 3; ++k) h.initial_momentum[k] = d0.momentum[k];
+    h.checksum = sim.state_checksum();
+    write_checkpoint(checkpoint_path, h, static_cast<std::int64_t>(sim.size()), sim.state_rows(), comm);
+    sim.invalidate_neighbours();  // a restart from this file takes the same path from here
+    last_checkpoint = Clock::now();
+    checkpoint_seconds += std::chrono::duration<double>(last_checkpoint - c0).count();
+    ++checkpoints;
+    if (root && opt.progress)
+      std::fprintf(stderr, "  checkpoint: step %lld, t = %.6g s -> %s (%.2f s)\n", static_cast<long long>(sim.steps()), sim.time(),
+                   checkpoint_path.c_str(), std::chrono::duration<double>(last_checkpoint - c0).count());
+  };
+
+  if (!restarting) record();
   const auto loop0 = Clock::now();
   auto last_progress = loop0;
   std::int64_t pair_samples = 0;
   double pair_sum = 0;
-  int output_index = 1;
+  int output_index = static_cast<int>(std::floor(sim.time() / scene.output_interval * (1 + 1e-12))) + 1;
   report.status = "completed";
   while (sim.time() < scene.duration * (1 - 1e-12)) {
     const double next_output = std::min(scene.duration, output_index * scene.output_interval);
@@ -123,8 +184,8 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
       last_dt = sim.step(next_output);
     } catch (const BlowUp& e) {
       // the particles hold the state at the start of the failed step: write it
-      std::fprintf(stderr, "ondine: %s; the last good state (t = %g s) is the last snapshot\n", e.what(), sim.time());
-      snapshots.write(sim.particles(), sim.time(), sim.steps());
+      if (root) std::fprintf(stderr, "ondine: %s; the last good state (t = %g s) is the last snapshot\n", e.what(), sim.time());
+      snapshots.write(sim.particles(), sim.time(), sim.steps(), static_cast<std::int64_t>(sim.size()));
       report.message = e.what();
       diverged = true;
     } catch (const std::runtime_error& e) {
@@ -148,8 +209,10 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
         ++pair_samples;
       }
     }
-    if (stop_requested.load()) {
+    const int sig = static_cast<int>(comm.max(static_cast<std::int64_t>(stop_signal.load())));
+    if (sig >= 0) {
       report.status = "interrupted";
+      report.signal = sig;
       if (sim.time() > snapshots.entries().back().time) record();
       break;
     }
@@ -159,17 +222,22 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
       break;
     }
     const auto now = Clock::now();
-    if (opt.progress && std::chrono::duration<double>(now - last_progress).count() >= opt.progress_interval) {
+    const bool by_steps = scene.checkpoint_every_steps > 0 && sim.steps() % scene.checkpoint_every_steps == 0;
+    const bool by_wall = scene.checkpoint_every_wall_seconds > 0 &&
+                         comm.any(std::chrono::duration<double>(now - last_checkpoint).count() >= scene.checkpoint_every_wall_seconds);
+    if (by_steps || by_wall) checkpoint();
+    if (root && opt.progress && std::chrono::duration<double>(now - last_progress).count() >= opt.progress_interval) {
       last_progress = now;
       const double el = std::chrono::duration<double>(now - loop0).count();
-      const double rate = sim.steps() / el;
-      const double eta = el * (scene.duration - sim.time()) / std::max(sim.time(), 1e-300);
+      const double rate = (sim.steps() - (restarting ? restart.header.step : 0)) / el;
+      const double eta = el * (scene.duration - sim.time()) / std::max(sim.time() - t_start, 1e-300);
       std::fprintf(stderr, "  t = %.4g / %.4g s   step %lld   %.1f steps/s   dt %.3g s   ETA %s\n", sim.time(),
                    scene.duration, static_cast<long long>(sim.steps()), rate, last_dt, fmt_seconds(eta).c_str());
     }
   }
+  if (report.status != "diverged") checkpoint();
   const double loop_seconds = std::chrono::duration<double>(Clock::now() - loop0).count();
-  report.steps = sim.steps();
+  report.steps = sim.steps() - (restarting ? restart.header.step : 0);
   report.simulated_time = sim.time();
   report.wall_seconds = std::chrono::duration<double>(Clock::now() - wall0).count();
   if (report.status != "diverged") report.errors = sim.errors();
@@ -190,17 +258,25 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
   j["status"] = report.status;
   if (!report.message.empty()) j["message"] = report.message;
   j["dimension"] = D;
-  j["particles"] = sim.size();
-  j["steps"] = sim.steps();
+  j["particles"] = report.particles;
+  j["steps"] = report.steps;
+  j["total_steps"] = sim.steps();
+  if (restarting) j["restarted_from"] = {{"file", opt.restart}, {"step", restart.header.step}, {"time", restart.header.time}};
   j["simulated_time"] = sim.time();
   j["wall_seconds"] = report.wall_seconds;
   j["loop_seconds"] = loop_seconds;
-  j["particle_steps_per_second"] = loop_seconds > 0 ? sim.size() * static_cast<double>(sim.steps()) / loop_seconds : 0.0;
-  j["mean_neighbours"] = pair_samples > 0 ? pair_sum / pair_samples / sim.size() : 0.0;
+  j["particle_steps_per_second"] = loop_seconds > 0 ? report.particles * static_cast<double>(report.steps) / loop_seconds : 0.0;
+  j["mean_neighbours"] = pair_samples > 0 ? pair_sum / pair_samples / report.particles : 0.0;
   j["neighbour_list_builds"] = sim.neighbour_builds();
   j["backend"] = default_backend();
   j["threads"] = backend_threads();
-  j["ranks"] = opt.ranks;
+  j["ranks"] = comm.size();
+  j["parallel"] = {{"balance_tau", sim.balance()},
+                   {"rebalances", sim.rebalances()},
+                   {"migrated_particles", sim.migrated()},
+                   {"exchange_seconds_max", comm.max(sim.exchange_seconds())},
+                   {"exchange_share_of_loop", loop_seconds > 0 ? comm.max(sim.exchange_seconds()) / loop_seconds : 0.0}};
+  j["checkpoints"] = {{"count", checkpoints}, {"seconds", checkpoint_seconds}, {"file", checkpoint_path}};
   j["kokkos_version"] = kokkos_version();
   j["ondine_version"] = ondine_version();
   j["scheme"] = {{"kernel", to_string(scene.kernel)},
@@ -216,13 +292,13 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
                  {"time_integrator", to_string(scene.integrator)}};
   j["errors"] = report.errors;
   j["snapshots"] = snapshots.entries().size();
-  write_text_atomically(opt.out_dir + "/summary.json", j.dump(2) + "\n");
+  if (root) write_text_atomically(opt.out_dir + "/summary.json", j.dump(2) + "\n");
   return report;
 }
 
 }  // namespace
 
-void request_stop() { stop_requested.store(true); }
+void request_stop(int signal) { stop_signal.store(signal); }
 
 RunReport run_scene(const Scene& scene, const RunOptions& options) {
   return scene.dimension == 2 ? run<2>(scene, options) : run<3>(scene, options);

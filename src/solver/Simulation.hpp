@@ -1,8 +1,11 @@
 #pragma once
-// Weakly-compressible SPH on one rank: state, neighbour structures, the
-// derivative evaluation (EOS, optional density-gradient pass, flux pass) and
-// the time integrators (classical RK4, explicit midpoint predictor-corrector).
-// Templated on dimension only; the physics is chosen once, in FluxDispatch.
+// Weakly-compressible SPH: state, neighbour structures, the derivative
+// evaluation (EOS, optional density-gradient pass, flux pass) and the time
+// integrators (classical RK4, explicit midpoint predictor-corrector). Templated
+// on dimension only; the physics is chosen once, in FluxDispatch.
+// On several MPI ranks each rank owns the particles of its ORB subdomain
+// (indices 0 .. owned()-1) followed by halo copies of its neighbours'; every
+// public call is collective and returns global figures.
 #include <cstdint>
 #include <map>
 #include <stdexcept>
@@ -12,6 +15,11 @@
 #include "kernels/CellList.hpp"
 #include "kernels/FluxArgs.hpp"
 #include "kernels/NeighbourList.hpp"
+#include "kernels/OrbLookup.hpp"
+#include "io/Checkpoint.hpp"
+#include "parallel/Communicator.hpp"
+#include "parallel/Decomposition.hpp"
+#include "parallel/ParticleExchange.hpp"
 #include "particles/ParticleSet.hpp"
 #include "kernels/FluidRegion.hpp"
 #include "scene/Scene.hpp"
@@ -51,7 +59,9 @@ struct BlowUp : std::runtime_error {
 template <int D>
 class Simulation {
  public:
-  explicit Simulation(const Scene& scene);
+  // A new run from the scene's fluid blocks, or, with `restart`, this rank's
+  // share of a checkpoint (io/Checkpoint.hpp).
+  explicit Simulation(const Scene& scene, const CheckpointSlice* restart = nullptr);
 
   // Advances one time step; returns the step taken. `t_stop` caps the step so
   // that output instants are hit exactly.
@@ -62,11 +72,29 @@ class Simulation {
   const Scene& scene() const { return scene_; }
   ParticleSet<D>& particles() { return p_; }
   const ParticleSet<D>& particles() const { return p_; }
-  std::size_t size() const { return p_.size(); }
+  std::size_t size() const { return static_cast<std::size_t>(n_own_); }  // particles this rank owns
+  std::int64_t global_size() const { return comm_.sum(static_cast<std::int64_t>(n_own_)); }
+  const Communicator& comm() const { return comm_; }
+  // distributed runs: balance indicator tau (5.30) at the last list build, rebalances,
+  // particles migrated, wall seconds in migration and halo exchange, halo copies here
+  double balance() const { return tau_; }
+  int rebalances() const { return rebalances_; }
+  std::int64_t migrated() const { return exchange_.migrated(); }
+  double exchange_seconds() const { return exchange_.seconds(); }
+  int halo_count() const { return exchange_.halo_count(); }
+  const Decomposition& decomposition() const { return decomposition_; }
+  // the neighbour list is rebuilt at the next evaluation (a checkpoint does it, so
+  // that a restarted run takes the same path)
+  void invalidate_neighbours() { list_valid_ = false; }
+  // owned rows of the state fields (io/Checkpoint.hpp) on the host: name -> (rows, components)
+  std::map<std::string, std::pair<std::vector<double>, int>> state_rows() const;
+  // order-independent checksum of the state fields (position, velocity, density, mass, id), all ranks
+  std::uint64_t state_checksum() const;
   std::int64_t pair_count() const;            // pairs within R (both ways) at the last list build
   std::int64_t neighbour_builds() const { return builds_; }
 
   Diagnostics diagnostics() const;
+  const Diagnostics& initial_diagnostics() const { return initial_; }
   std::vector<ProbeSample> sample_probes() const;
   std::vector<ProbeSample> sample_at(const std::vector<Vec3>& points) const;
   // Error figures against the analytic solution the scene has, if any.
@@ -88,26 +116,39 @@ class Simulation {
   double front_position() const;
 
  private:
-  void fill();
+  void fill(std::int64_t first, std::int64_t end);
+  void load_checkpoint(const CheckpointSlice& restart);
   void remove_outside_fluid();
   void update_walls(double t);
   void ensure_neighbours();
+  void rebuild_neighbours(bool may_rebalance);
+  void decompose(bool by_pairs);
+  void refresh_halos();
   void reorder_by_cell();
   double time_step() const;
   void stage_update(double c_dt, double acc_weight, bool first);
   void check_state(double dt);
 
   Scene scene_;
+  Communicator comm_;
   ParticleSet<D> p_;
   PeriodicBox<D> box_;
   double R_, cutoff_;
   CellList<D> cells_;
   NeighbourList<D> list_;
   field_view_t<field::Position, D> x_at_build_;
-  // Stage storage of the integrators: y0 and the RK4 weighted sum of derivatives.
-  field_view_t<field::Position, D> x0_, x_acc_;
-  field_view_t<field::Velocity, D> u0_, u_acc_;
-  field_view_t<field::Density, D> rho0_, rho_acc_;
+  // decomposition: global grid, this rank's grid (own cells + halo ring) and the
+  // box its integrator wraps positions in (periodic only along axes it spans)
+  CellGrid<D> global_grid_, local_grid_;
+  PeriodicBox<D> local_box_;
+  Decomposition decomposition_;
+  OrbLookup<D> orb_;
+  ParticleExchange<D> exchange_;
+  int n_own_ = 0;
+  std::int64_t lattice_first_ = 0;
+  bool halos_fresh_ = true;
+  double tau_ = 1.0;
+  int rebalances_ = 0;
   FluxFunction<D> flux_ = nullptr;
   WallModel<D> walls_;
   FluidRegion<D> region_;

@@ -11,6 +11,7 @@
 #include "kernels/WallFluxPass.hpp"
 #include "kernels/WallForces.hpp"
 #include "kernels/InitialFill.hpp"
+#include "kernels/StateHash.hpp"
 #include "kernels/Integrator.hpp"
 #include "kernels/Permute.hpp"
 #include "kernels/ShiftingPass.hpp"
@@ -37,7 +38,7 @@ void with_eos(const Scene& s, F&& f) {
 }  // namespace detail
 
 template <int D>
-Simulation<D>::Simulation(const Scene& scene) : scene_(scene), p_(count_particles(scene)) {
+Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : scene_(scene) {
   if (scene.dimension != D) throw std::logic_error("Simulation<D>: scene dimension mismatch");
   R_ = scene.R();
   cutoff_ = R_ + scene.neighbour_skin * scene.dx;
@@ -48,6 +49,15 @@ Simulation<D>::Simulation(const Scene& scene) : scene_(scene), p_(count_particle
     if (box_.periodic[k] && box_.len[k] < 2.0 * cutoff_)
       throw std::invalid_argument("a periodic axis must be at least 2 (R + skin) long");
   }
+  global_grid_ = make_cell_grid(box_, cutoff_);
+  local_grid_ = global_grid_;
+  local_box_ = box_;
+  // this rank's share of the lattice or of the checkpoint; migrate() then sends
+  // every particle to the owner of its cell
+  const std::int64_t lattice = count_particles(scene);
+  lattice_first_ = lattice * comm_.rank() / comm_.size();
+  const std::int64_t lattice_end = lattice * (comm_.rank() + 1) / comm_.size();
+  p_ = ParticleSet<D>(restart ? static_cast<std::size_t>(restart->rows) : static_cast<std::size_t>(lattice_end - lattice_first_));
   p_.allocate(field::Position{});
   p_.allocate(field::Velocity{});
   p_.allocate(field::Density{});
@@ -90,17 +100,37 @@ Simulation<D>::Simulation(const Scene& scene) : scene_(scene), p_(count_particle
     region_.closed.fluid_inside = dev(inside, "ondine::NFM::closed_inside");
     region_.closed.walls = static_cast<int>(first.size());
   }
-  fill();
-  if (walls) remove_outside_fluid();
+  if (restart) {
+    load_checkpoint(*restart);
+  } else {
+    fill(lattice_first_, lattice_end);
+    if (walls) remove_outside_fluid();
+  }
+  n_own_ = static_cast<int>(p_.size());
+  if (restart && state_checksum() != restart->header.checksum)
+    throw CheckpointError("the particle state read from the checkpoint does not match its checksum: the file is corrupted");
+  if (!comm_.serial()) {
+    // first decomposition: weighted by the particles in each cell
+    decompose(false);
+    n_own_ = exchange_.migrate(p_, n_own_, orb_, box_, comm_);
+  }
   detail::with_eos<D>(scene_, [&](auto eos) {
-    update_pressure<D>(eos, p_.get(field::Density{}), p_.get(field::Pressure{}), static_cast<int>(p_.size()));
+    update_pressure<D>(eos, p_.get(field::Density{}), p_.get(field::Pressure{}), n_own_);
   });
   initial_ = diagnostics();
+  if (restart) {
+    t_ = restart->header.time;
+    steps_ = restart->header.step;
+    stage_time_ = t_;
+    initial_.mass = restart->header.initial_mass;
+    for (int k = 0; k < 3; ++k) initial_.momentum[k] = restart->header.initial_momentum[k];
+    if (walls_.moving()) update_walls(t_);
+  }
 }
 
 // Lattice fill of each block at (k + 1/2) dx, with its initial velocity and pressure.
 template <int D>
-void Simulation<D>::fill() {
+void Simulation<D>::fill(std::int64_t first, std::int64_t end) {
   const auto x = p_.get(field::Position{});
   const auto u = p_.get(field::Velocity{});
   const auto rho = p_.get(field::Density{});
@@ -123,6 +153,12 @@ void Simulation<D>::fill() {
     }
     // hydrostatic column: the free surface is the block face facing against gravity
     for (int k = 0; k < D; ++k) top += (g[k] > 0 ? b.box.min[k] : b.box.max[k]) * (-g[k]);
+    // the part of this block's lattice [offset, offset + nb) in this rank's share [first, end)
+    const std::int64_t a = std::max(first, offset), e = std::min(end, offset + nb);
+    if (e <= a) {
+      offset += nb;
+      continue;
+    }
     InitialFill<D> f;
     f.x = x;
     f.u = u;
@@ -130,6 +166,8 @@ void Simulation<D>::fill() {
     f.m = m;
     f.id = id;
     f.offset = offset;
+    f.first = a - offset;
+    f.dst = a - first;
     for (int k = 0; k < D; ++k) {
       f.cnt[k] = cnt[k];
       f.lo[k] = lo[k];
@@ -147,7 +185,7 @@ void Simulation<D>::fill() {
     f.rho0 = s.rho0;
     f.c0 = s.c0;
     f.gam = s.tait_gamma;
-    f.run(nb);
+    f.run(e - a);
     offset += nb;
   }
 }
@@ -162,11 +200,66 @@ void Simulation<D>::remove_outside_fluid() {
                        FluidRegionFilter<D>{region_, 0.5 * scene_.dx * (1 - 1e-9), p_.get(field::Position{}), keep});
   int kept = 0;
   Kokkos::parallel_scan("ondine::Fill::scan", Kokkos::RangePolicy<ExecSpace>(0, n), KeepScan{keep, index}, kept);
-  if (kept == 0) throw std::invalid_argument(scene_.source_file + ": no fluid particle lies inside the walls (check fluid_blocks and walls[].fluid_side)");
+  if (comm_.sum(static_cast<std::int64_t>(kept)) == 0)
+    throw std::invalid_argument(scene_.source_file + ": no fluid particle lies inside the walls (check fluid_blocks and walls[].fluid_side)");
   Kokkos::View<int*, MemSpace> order("ondine::Fill::order", kept);
   Kokkos::parallel_for("ondine::Fill::gather", Kokkos::RangePolicy<ExecSpace>(0, n), KeepGather{keep, index, order});
   p_.permute([&order](const auto& v) { return permuted(v, order); }, static_cast<std::size_t>(kept));
-  Kokkos::parallel_for("ondine::Fill::renumber", Kokkos::RangePolicy<ExecSpace>(0, kept), Iota{p_.get(field::GlobalId{})});
+  Kokkos::parallel_for("ondine::Fill::renumber", Kokkos::RangePolicy<ExecSpace>(0, kept),
+                       Iota{p_.get(field::GlobalId{}), comm_.exclusive_scan(kept)});
+}
+
+// This rank's share of a checkpoint into the state fields.
+template <int D>
+void Simulation<D>::load_checkpoint(const CheckpointSlice& c) {
+  auto put = [&](auto tag) {
+    using V = field_view_t<decltype(tag), D>;
+    const std::vector<double>& rows = c.fields.at(decltype(tag)::label);
+    const int w = exchange::width_of<V>();
+    exchange::Rows dev("ondine::Restart::rows", c.rows, w);
+    Kokkos::deep_copy(dev, Kokkos::View<const double**, Kokkos::LayoutRight, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(
+                               rows.data(), c.rows, w));
+    Kokkos::parallel_for("ondine::Restart::unpack", Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(c.rows)),
+                         exchange::UnpackRows<V>{p_.get(tag), dev, 0, 0});
+  };
+  put(field::Position{});
+  put(field::Velocity{});
+  put(field::Density{});
+  put(field::Mass{});
+  put(field::GlobalId{});
+}
+
+template <int D>
+std::map<std::string, std::pair<std::vector<double>, int>> Simulation<D>::state_rows() const {
+  std::map<std::string, std::pair<std::vector<double>, int>> out;
+  Kokkos::View<int*, MemSpace> index("ondine::Checkpoint::index", n_own_);
+  Kokkos::parallel_for("ondine::Checkpoint::index", Kokkos::RangePolicy<ExecSpace>(0, n_own_), Iota32{index});
+  auto take = [&](auto tag) {
+    using V = field_view_t<decltype(tag), D>;
+    const int w = exchange::width_of<V>();
+    exchange::Rows dev("ondine::Checkpoint::rows", n_own_, w);
+    exchange::PackRows<V, D> f{p_.get(tag), index, Kokkos::View<int*, MemSpace>(), dev, 0, {}};
+    Kokkos::parallel_for("ondine::Checkpoint::pack", Kokkos::RangePolicy<ExecSpace>(0, n_own_), f);
+    std::vector<double> rows(static_cast<std::size_t>(n_own_) * w);
+    Kokkos::deep_copy(Kokkos::View<double**, Kokkos::LayoutRight, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(rows.data(), n_own_, w), dev);
+    out[decltype(tag)::label] = {std::move(rows), w};
+  };
+  take(field::Position{});
+  take(field::Velocity{});
+  take(field::Density{});
+  take(field::Mass{});
+  take(field::GlobalId{});
+  return out;
+}
+
+template <int D>
+std::uint64_t Simulation<D>::state_checksum() const {
+  unsigned long long h = 0;
+  Kokkos::parallel_reduce("ondine::StateHash", Kokkos::RangePolicy<ExecSpace>(0, n_own_),
+                          StateHash<D>{p_.get(field::Position{}), p_.get(field::Velocity{}), p_.get(field::Density{}),
+                                       p_.get(field::Mass{}), p_.get(field::GlobalId{})},
+                          h);
+  return comm_.sum_u64(static_cast<std::uint64_t>(h));
 }
 
 template <int D>
@@ -184,30 +277,42 @@ std::int64_t Simulation<D>::pair_count() const {
   const double R2 = R_ * R_;
   std::int64_t total = 0;
   if (!list_valid_) return 0;
-  Kokkos::parallel_reduce("ondine::PairCount", Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(p_.size())),
+  Kokkos::parallel_reduce("ondine::PairCount", Kokkos::RangePolicy<ExecSpace>(0, n_own_),
                           KOKKOS_LAMBDA(const int i, std::int64_t& acc) {
                             const Vec<D> xi = load<D>(x, i);
                             for (int n = 0; n < list.num_neighbours(i); ++n)
                               if (norm2(box.delta(xi, load<D>(x, list.neighbour(i, n)))) < R2) ++acc;
                           },
                           total);
-  return total;
+  return comm_.sum(total);
 }
 
 template <int D>
 void Simulation<D>::ensure_neighbours() {
-  const int n = static_cast<int>(p_.size());
   const auto x = p_.get(field::Position{});
   if (list_valid_ && scene_.neighbour_skin > 0) {
-    // Verlet criterion: rebuild once some particle moved more than skin/2.
+    // Verlet criterion: rebuild once some particle (on any rank) moved more than skin/2.
     double d2max = 0;
-    Kokkos::parallel_reduce("ondine::NeighbourList::displacement", Kokkos::RangePolicy<ExecSpace>(0, n),
+    Kokkos::parallel_reduce("ondine::NeighbourList::displacement", Kokkos::RangePolicy<ExecSpace>(0, n_own_),
                             MaxDisplacement2<D>{box_, x, x_at_build_}, Kokkos::Max<double>(d2max));
     const double half_skin = 0.5 * scene_.neighbour_skin * scene_.dx;
-    if (d2max < half_skin * half_skin) return;
+    if (comm_.max(d2max) < half_skin * half_skin) return;
   }
-  cells_.build(make_cell_grid(box_, cutoff_), x, n);
-  list_.build(cells_, box_, x, n, cutoff_);
+  rebuild_neighbours(true);
+}
+
+// Migration and halos (several ranks), cell list over owned + halo particles,
+// list for the owned ones; then the balance check, which may rebalance once.
+template <int D>
+void Simulation<D>::rebuild_neighbours(bool may_rebalance) {
+  if (!comm_.serial()) {
+    n_own_ = exchange_.migrate(p_, n_own_, orb_, box_, comm_);
+    exchange_.build_halos(p_, n_own_, orb_, box_, comm_);
+    halos_fresh_ = true;
+  }
+  const auto x = p_.get(field::Position{});
+  cells_.build(local_grid_, x, static_cast<int>(p_.size()));
+  list_.build(cells_, box_, x, n_own_, cutoff_);
   if (scene_.neighbour_skin > 0) {
     if (x_at_build_.extent(0) != x.extent(0))
       x_at_build_ = field_view_t<field::Position, D>("ondine::NeighbourList::x_at_build", x.extent(0));
@@ -215,23 +320,77 @@ void Simulation<D>::ensure_neighbours() {
   }
   list_valid_ = true;
   ++builds_;
+  if (!comm_.serial()) {
+    // tau = min work / max work over the ranks (thesis 5.30), work = pair interactions
+    std::vector<double> work;
+    for (std::int64_t w : comm_.gather_all(list_.total())) work.push_back(static_cast<double>(w));
+    tau_ = balance_indicator(work);
+    if (may_rebalance && tau_ < scene_.rebalance_threshold) {
+      const double before = tau_;
+      decompose(true);
+      ++rebalances_;
+      rebuild_neighbours(false);
+      if (comm_.rank() == 0)
+        std::fprintf(stderr, "ondine: step %lld: rebalanced, tau %.3f -> %.3f\n", static_cast<long long>(steps_), before, tau_);
+    }
+  }
+}
+
+// ORB of the global cell grid (src/parallel/Decomposition.hpp), weighted by the
+// pair interactions of each cell (from the current list) or, before the first
+// list, by its particle count.
+template <int D>
+void Simulation<D>::decompose(bool by_pairs) {
+  const int ncell = global_grid_.cells();
+  Kokkos::View<double*, MemSpace> work("ondine::Decomposition::work", ncell);
+  const auto x = p_.get(field::Position{});
+  const auto g = global_grid_;
+  const auto list = list_;
+  const auto box = box_;
+  const bool pairs = by_pairs && list_valid_;
+  Kokkos::parallel_for("ondine::Decomposition::work", Kokkos::RangePolicy<ExecSpace>(0, n_own_), KOKKOS_LAMBDA(const int i) {
+    int c[D];
+    for (int k = 0; k < D; ++k) c[k] = g.coord(box.wrap(x(i, k), k), k);
+    Kokkos::atomic_add(&work(g.linear(c)), 1.0 + (pairs ? list.num_neighbours(i) : 0));
+  });
+  std::vector<double> host(ncell);
+  Kokkos::deep_copy(Kokkos::View<double*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(host.data(), ncell), work);
+  comm_.sum_in_place(host);
+  bool periodic[D];
+  for (int k = 0; k < D; ++k) periodic[k] = box_.periodic[k];
+  decomposition_ = Decomposition::bisect(D, global_grid_.n, periodic, host, comm_.size());
+  orb_ = make_orb_lookup<D>(decomposition_, global_grid_);
+  const CellBox& mine = decomposition_.box(comm_.rank());
+  local_grid_ = local_cell_grid<D>(global_grid_, mine);
+  local_box_ = box_;
+  for (int k = 0; k < D; ++k) local_box_.periodic[k] = box_.periodic[k] && decomposition_.spans(comm_.rank(), k);
+  list_valid_ = false;
 }
 
 template <int D>
+void Simulation<D>::refresh_halos() {
+  if (comm_.serial() || halos_fresh_) return;
+  exchange_.refresh(p_, comm_, field::Position{}, field::Velocity{}, field::Density{});
+  halos_fresh_ = true;
+}
+
+// Owned particles sorted by cell for memory locality; halos are dropped (the
+// next list build brings them back).
+template <int D>
 void Simulation<D>::reorder_by_cell() {
-  const int n = static_cast<int>(p_.size());
-  cells_.build(make_cell_grid(box_, cutoff_), p_.get(field::Position{}), n);
-  const auto perm = Kokkos::subview(cells_.sorted, std::make_pair(0, n));
-  Kokkos::View<int*, MemSpace> order("ondine::Reorder::order", n);
+  cells_.build(local_grid_, p_.get(field::Position{}), n_own_);
+  const auto perm = Kokkos::subview(cells_.sorted, std::make_pair(0, n_own_));
+  Kokkos::View<int*, MemSpace> order("ondine::Reorder::order", n_own_);
   Kokkos::deep_copy(order, perm);
-  p_.permute([&order](const auto& v) { return permuted(v, order); });
+  p_.permute([&order](const auto& v) { return permuted(v, order); }, static_cast<std::size_t>(n_own_));
   list_valid_ = false;
 }
 
 template <int D>
 void Simulation<D>::evaluate() {
   ensure_neighbours();
-  const int n = static_cast<int>(p_.size());
+  refresh_halos();
+  const int n = n_own_, n_all = static_cast<int>(p_.size());
   FluxArgs<D> a;
   a.n = n;
   a.list = list_;
@@ -248,7 +407,7 @@ void Simulation<D>::evaluate() {
   a.nu = scene_.nu;
   a.delta_coeff = scene_.delta_sph * scene_.c0 * R_;
   a.av_alpha_R_c0 = scene_.artificial_viscosity * R_ * scene_.c0;
-  detail::with_eos<D>(scene_, [&](auto eos) { update_pressure<D>(eos, a.rho, a.P, n); });
+  detail::with_eos<D>(scene_, [&](auto eos) { update_pressure<D>(eos, a.rho, a.P, n_all); });
   if (scene_.background_pressure) {
     // (2.105): P_min = max(0, -min_k P_k)
     double pmin = 0;
@@ -256,18 +415,20 @@ void Simulation<D>::evaluate() {
     Kokkos::parallel_reduce("ondine::BackgroundPressure::min", Kokkos::RangePolicy<ExecSpace>(0, n),
                             KOKKOS_LAMBDA(const int i, double& mn) { if (P(i) < mn) mn = P(i); },
                             Kokkos::Min<double>(pmin));
+    pmin = comm_.min(pmin);
     a.P_min = pmin < 0 ? -pmin : 0.0;
   }
   const bool walls = !walls_.empty();
   if (walls) {
     update_walls(stage_time_);
-    ShepardGammaPass<D>{walls_.segments(), R_, box_, a.x, p_.get(field::ShepardGamma{})}.run(n);
+    ShepardGammaPass<D>{walls_.segments(), R_, box_, a.x, p_.get(field::ShepardGamma{})}.run(n_all);
   }
   if (scene_.delta_sph > 0 || walls) {
     a.grad_rho = p_.get(field::DensityGradient{});
     with_kernel<D>(scene_.kernel, R_, [&](auto W) {
       DensityGradientPass<D, decltype(W)>{list_, box_, W, R_ * R_, a.x, a.rho, a.m, a.grad_rho}.run(n);
     });
+    if (!comm_.serial()) exchange_.refresh(p_, comm_, field::DensityGradient{});
   }
   flux_(a);
   if (walls) {
@@ -290,7 +451,7 @@ void Simulation<D>::evaluate() {
 // dt = min(CFL_a R / c_max (2.102), CFL_nu R^2 / nu (2.103), CFL_f sqrt(R / |a|_max) [V&I 11]).
 template <int D>
 double Simulation<D>::time_step() const {
-  const int n = static_cast<int>(p_.size());
+  const int n = n_own_;
   const auto rho = p_.get(field::Density{});
   const auto du = p_.get(field::Acceleration{});
   double cmax = 0, a2max = 0;
@@ -300,6 +461,8 @@ double Simulation<D>::time_step() const {
   });
   Kokkos::parallel_reduce("ondine::TimeStep::acceleration", Kokkos::RangePolicy<ExecSpace>(0, n),
                           MaxNorm2<D, std::decay_t<decltype(du)>>{du}, Kokkos::Max<double>(a2max));
+  cmax = comm_.max(cmax);
+  a2max = comm_.max(a2max);
   double dt = scene_.cfl_acoustic * R_ / cmax;
   if (scene_.nu > 0) dt = std::min(dt, scene_.cfl_viscous * R_ * R_ / scene_.nu);
   if (a2max > 0) dt = std::min(dt, scene_.cfl_force * std::sqrt(R_ / std::sqrt(a2max)));
@@ -312,6 +475,7 @@ double Simulation<D>::time_step() const {
                                                                    p_.get(field::ShepardGamma{})},
                               Kokkos::Max<double>(kmax));
     });
+    kmax = comm_.max(kmax);
     if (kmax > 0) dt = std::min(dt, 1.0 / kmax);
   }
   if (!std::isfinite(dt) || dt <= 0) throw std::runtime_error("time step is not finite (the state contains NaN)");
@@ -322,43 +486,43 @@ double Simulation<D>::time_step() const {
 // derivatives, and the weighted sum acc += w k used by the final RK4 update.
 template <int D>
 void Simulation<D>::stage_update(double c_dt, double w, bool first) {
-  const int n = static_cast<int>(p_.size());
-  RungeKuttaStage<D>{box_,
+  const bool rk4 = scene_.integrator == TimeIntegrator::RK4;
+  RungeKuttaStage<D>{local_box_,
                      p_.get(field::Position{}),
                      p_.get(field::Velocity{}),
                      p_.get(field::Density{}),
                      p_.get(field::Acceleration{}),
                      p_.get(field::DensityRate{}),
-                     x0_,
-                     x_acc_,
-                     u0_,
-                     u_acc_,
-                     rho0_,
-                     rho_acc_,
+                     p_.get(field::StagePosition{}),
+                     rk4 ? p_.get(field::StagePositionSum{}) : field_view_t<field::Position, D>(),
+                     p_.get(field::StageVelocity{}),
+                     rk4 ? p_.get(field::StageVelocitySum{}) : field_view_t<field::Velocity, D>(),
+                     p_.get(field::StageDensity{}),
+                     rk4 ? p_.get(field::StageDensitySum{}) : field_view_t<field::Density, D>(),
                      c_dt,
                      w,
                      w != 0.0,
                      first}
-      .run(n);
+      .run(n_own_);
+  halos_fresh_ = false;
 }
 
 template <int D>
 double Simulation<D>::step(double t_stop) {
-  const int n = static_cast<int>(p_.size());
   if (scene_.reorder_interval > 0 && steps_ % scene_.reorder_interval == 0) reorder_by_cell();
-  if (x0_.extent(0) != p_.size()) {
-    x0_ = field_view_t<field::Position, D>("ondine::Integrator::x0", n);
-    u0_ = field_view_t<field::Velocity, D>("ondine::Integrator::u0", n);
-    rho0_ = field_view_t<field::Density, D>("ondine::Integrator::rho0", n);
+  if (!p_.has(field::StagePosition{})) {
+    p_.allocate(field::StagePosition{});
+    p_.allocate(field::StageVelocity{});
+    p_.allocate(field::StageDensity{});
     if (scene_.integrator == TimeIntegrator::RK4) {
-      x_acc_ = field_view_t<field::Position, D>("ondine::Integrator::x_sum", n);
-      u_acc_ = field_view_t<field::Velocity, D>("ondine::Integrator::u_sum", n);
-      rho_acc_ = field_view_t<field::Density, D>("ondine::Integrator::rho_sum", n);
+      p_.allocate(field::StagePositionSum{});
+      p_.allocate(field::StageVelocitySum{});
+      p_.allocate(field::StageDensitySum{});
     }
   }
-  Kokkos::deep_copy(x0_, p_.get(field::Position{}));
-  Kokkos::deep_copy(u0_, p_.get(field::Velocity{}));
-  Kokkos::deep_copy(rho0_, p_.get(field::Density{}));
+  Kokkos::deep_copy(p_.get(field::StagePosition{}), p_.get(field::Position{}));
+  Kokkos::deep_copy(p_.get(field::StageVelocity{}), p_.get(field::Velocity{}));
+  Kokkos::deep_copy(p_.get(field::StageDensity{}), p_.get(field::Density{}));
 
   stage_time_ = t_;
   evaluate();  // k1 at y0, also the state the time step is computed from
@@ -377,20 +541,21 @@ double Simulation<D>::step(double t_stop) {
     stage_time_ = t_ + dt;
     evaluate();
     // final: y = y0 + dt (acc + k4/6)
-    RungeKutta4Final<D>{box_,
+    RungeKutta4Final<D>{local_box_,
                         p_.get(field::Position{}),
                         p_.get(field::Velocity{}),
                         p_.get(field::Density{}),
                         p_.get(field::Acceleration{}),
                         p_.get(field::DensityRate{}),
-                        x0_,
-                        x_acc_,
-                        u0_,
-                        u_acc_,
-                        rho0_,
-                        rho_acc_,
+                        p_.get(field::StagePosition{}),
+                        p_.get(field::StagePositionSum{}),
+                        p_.get(field::StageVelocity{}),
+                        p_.get(field::StageVelocitySum{}),
+                        p_.get(field::StageDensity{}),
+                        p_.get(field::StageDensitySum{}),
                         dt}
-        .run(n);
+        .run(n_own_);
+    halos_fresh_ = false;
   } else {
     // explicit midpoint: y_1/2 = y0 + dt/2 k1, y1 = y0 + dt k(y_1/2)
     stage_update(0.5 * dt, 0.0, true);
@@ -401,6 +566,11 @@ double Simulation<D>::step(double t_stop) {
   if (scene_.shifting) {
     // (2.107)-(2.111) once per step, into the stage storage, then copied back
     ensure_neighbours();
+    refresh_halos();
+    const int n = n_own_;
+    const auto x0_ = p_.get(field::StagePosition{});
+    const auto u0_ = p_.get(field::StageVelocity{});
+    const auto rho0_ = p_.get(field::StageDensity{});
     with_kernel<D>(scene_.kernel, R_, [&](auto W) {
       const double max_shift = 0.02 * scene_.dx;  // per step (kernels/ShiftingPass.hpp)
       if (walls_.empty())
@@ -417,10 +587,13 @@ double Simulation<D>::step(double t_stop) {
     Kokkos::deep_copy(p_.get(field::Position{}), x0_);
     Kokkos::deep_copy(p_.get(field::Velocity{}), u0_);
     Kokkos::deep_copy(p_.get(field::Density{}), rho0_);
+    halos_fresh_ = false;
   }
   check_state(dt);
-  if (t_ < scene_.damping_time)
-    VelocityDamping<D>{p_.get(field::Velocity{}), std::exp(-dt / (0.1 * scene_.damping_time))}.run(n);
+  if (t_ < scene_.damping_time) {
+    VelocityDamping<D>{p_.get(field::Velocity{}), std::exp(-dt / (0.1 * scene_.damping_time))}.run(n_own_);
+    halos_fresh_ = false;
+  }
   t_ += dt;
   ++steps_;
   stage_time_ = t_;
@@ -432,13 +605,15 @@ double Simulation<D>::step(double t_stop) {
 // at the start of the step is put back so that the caller can write it.
 template <int D>
 void Simulation<D>::check_state(double dt) {
-  const int n = static_cast<int>(p_.size());
   int first = INT_MAX;
-  Kokkos::parallel_reduce("ondine::StateCheck", Kokkos::RangePolicy<ExecSpace>(0, n),
+  Kokkos::parallel_reduce("ondine::StateCheck", Kokkos::RangePolicy<ExecSpace>(0, n_own_),
                           FirstBadParticle<D>{p_.get(field::Position{}), p_.get(field::Velocity{}),
                                               p_.get(field::Density{}), 0.5 * scene_.rho0, 2.0 * scene_.rho0},
                           Kokkos::Min<int>(first));
-  if (first == INT_MAX) return;
+  // the lowest rank with a bad particle names it
+  const std::int64_t bad_rank = comm_.min(first == INT_MAX ? std::int64_t(comm_.size()) : std::int64_t(comm_.rank()));
+  if (bad_rank == comm_.size()) return;
+  if (first == INT_MAX) first = 0;
   // what went wrong, read from the host for that one particle
   auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), Kokkos::subview(p_.get(field::Position{}), first, Kokkos::ALL));
   auto u = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), Kokkos::subview(p_.get(field::Velocity{}), first, Kokkos::ALL));
@@ -457,15 +632,16 @@ void Simulation<D>::check_state(double dt) {
   } else {
     m << "density " << r() / scene_.rho0 << " rho0, outside [0.5, 2] rho0";
   }
-  Kokkos::deep_copy(p_.get(field::Position{}), x0_);
-  Kokkos::deep_copy(p_.get(field::Velocity{}), u0_);
-  Kokkos::deep_copy(p_.get(field::Density{}), rho0_);
-  throw BlowUp(m.str());
+  Kokkos::deep_copy(p_.get(field::Position{}), p_.get(field::StagePosition{}));
+  Kokkos::deep_copy(p_.get(field::Velocity{}), p_.get(field::StageVelocity{}));
+  Kokkos::deep_copy(p_.get(field::Density{}), p_.get(field::StageDensity{}));
+  halos_fresh_ = false;
+  throw BlowUp(comm_.broadcast(m.str(), static_cast<int>(bad_rank)));
 }
 
 template <int D>
 Diagnostics Simulation<D>::diagnostics() const {
-  const int n = static_cast<int>(p_.size());
+  const int n = n_own_;
   const auto x = p_.get(field::Position{});
   const auto u = p_.get(field::Velocity{});
   const auto rho = p_.get(field::Density{});
@@ -507,6 +683,14 @@ Diagnostics Simulation<D>::diagnostics() const {
                             c += (out ? 1 : 0) + (nan ? (std::int64_t(1) << 40) : 0);
                           },
                           bad);
+  // over all ranks
+  d.mass = comm_.sum(d.mass);
+  for (int k = 0; k < D; ++k) d.momentum[k] = comm_.sum(d.momentum[k]);
+  d.kinetic_energy = comm_.sum(d.kinetic_energy);
+  d.max_speed = comm_.max(d.max_speed);
+  d.rho_min = comm_.min(d.rho_min);
+  d.rho_max = comm_.max(d.rho_max);
+  bad = comm_.sum(bad);
   d.outside_domain = bad & ((std::int64_t(1) << 40) - 1);
   d.finite = (bad >> 40) == 0 && std::isfinite(d.kinetic_energy);
   return d;
@@ -523,7 +707,7 @@ std::vector<ProbeSample> Simulation<D>::sample_probes() const {
 template <int D>
 std::vector<ProbeSample> Simulation<D>::sample_at(const std::vector<Vec3>& points) const {
   std::vector<ProbeSample> out;
-  const int n = static_cast<int>(p_.size());
+  const int n = n_own_;
   const auto x = p_.get(field::Position{});
   const auto u = p_.get(field::Velocity{});
   const auto rho = p_.get(field::Density{});
@@ -540,7 +724,7 @@ std::vector<ProbeSample> Simulation<D>::sample_at(const std::vector<Vec3>& point
         double acc = 0;
         Kokkos::parallel_reduce("ondine::Probe", Kokkos::RangePolicy<ExecSpace>(0, n),
                                 ProbeSum<D, decltype(W), decltype(value)>{box, W, xp, x, rho, m, value}, acc);
-        return acc;
+        return comm_.sum(acc);
       };
       using Scalar = probe_value::Scalar<std::decay_t<decltype(rho)>>;
       using Component = probe_value::Component<std::decay_t<decltype(u)>>;
@@ -561,6 +745,7 @@ std::vector<WallForce> Simulation<D>::wall_forces() {
   std::vector<WallForce> out;
   if (walls_.empty()) return out;
   ensure_neighbours();  // the particle cell list is current
+  refresh_halos();
   const int nq = walls_.points().count;
   const double eos_gamma = scene_.eos == EosLaw::Tait ? scene_.tait_gamma : 1.0;
   const double nu = scene_.viscous_term != ViscousTerm::None ? scene_.nu : 0.0;
@@ -573,14 +758,29 @@ std::vector<WallForce> Simulation<D>::wall_forces() {
                                                       p_.get(field::Pressure{}), p_.get(field::Mass{}),
                                                       p_.get(field::DensityGradient{}), traction});
   });
+  // several ranks: each wall point is counted by the rank that owns its cell (its
+  // support is complete there: owned particles and halos)
+  Kokkos::View<int*, MemSpace> counted("ondine::NFM::counted", nq);
+  Kokkos::deep_copy(counted, 1);
+  if (!comm_.serial()) {
+    const auto orb = orb_;
+    const auto wx = walls_.points().x;
+    const auto box = box_;
+    const int me = comm_.rank();
+    Kokkos::parallel_for("ondine::NFM::wall_point_owner", Kokkos::RangePolicy<ExecSpace>(0, nq), KOKKOS_LAMBDA(const int q) {
+      Vec<D> xq;
+      for (int k = 0; k < D; ++k) xq[k] = box.wrap(wx(q, k), k);
+      counted(q) = orb.owner(xq) == me ? 1 : 0;
+    });
+  }
   for (int w = 0; w < walls_.wall_count(); ++w) {
     WallForce f;
     f.name = walls_.names()[w];
     for (int c = 0; c < 2 * D; ++c) {
       double v = 0;
       Kokkos::parallel_reduce("ondine::NFM::wall_force", Kokkos::RangePolicy<ExecSpace>(0, nq),
-                              WallTractionSum{traction, walls_.points().wall, w, c}, v);
-      (c < D ? f.pressure[c] : f.viscous[c - D]) = v;
+                              WallTractionSum{traction, walls_.points().wall, counted, w, c}, v);
+      (c < D ? f.pressure[c] : f.viscous[c - D]) = comm_.sum(v);
     }
     out.push_back(f);
   }
@@ -591,14 +791,15 @@ template <int D>
 std::int64_t Simulation<D>::wall_leaks(double clearance) const {
   if (walls_.empty()) return 0;
   long c = 0;
-  Kokkos::parallel_reduce("ondine::NFM::leaks", Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(p_.size())),
+  Kokkos::parallel_reduce("ondine::NFM::leaks", Kokkos::RangePolicy<ExecSpace>(0, n_own_),
                           WallLeakCount<D>{region_, clearance < 0 ? 0.1 * scene_.dx : clearance, p_.get(field::Position{})}, c);
-  return c;
+  return comm_.sum(static_cast<std::int64_t>(c));
 }
 
 template <int D>
 void Simulation<D>::prepare_output() {
   // the stored state's own pressure and Shepard factor (the flux passes left last-stage values)
+  refresh_halos();
   const int n = static_cast<int>(p_.size());
   detail::with_eos<D>(scene_, [&](auto eos) {
     update_pressure<D>(eos, p_.get(field::Density{}), p_.get(field::Pressure{}), n);
@@ -609,11 +810,17 @@ void Simulation<D>::prepare_output() {
 
 template <int D>
 void Simulation<D>::update_free_surface() {
-  const int n = static_cast<int>(p_.size());
-  if (!walls_.empty())
-    ShepardGammaPass<D>{walls_.segments(), R_, box_, p_.get(field::Position{}), p_.get(field::ShepardGamma{})}.run(n);
-  if (!p_.has(field::FreeSurface{})) return;
+  if (!p_.has(field::FreeSurface{})) {
+    if (!walls_.empty())
+      ShepardGammaPass<D>{walls_.segments(), R_, box_, p_.get(field::Position{}), p_.get(field::ShepardGamma{})}.run(n_own_);
+    return;
+  }
   ensure_neighbours();
+  refresh_halos();
+  const int n = n_own_;
+  if (!walls_.empty())
+    ShepardGammaPass<D>{walls_.segments(), R_, box_, p_.get(field::Position{}), p_.get(field::ShepardGamma{})}
+        .run(static_cast<int>(p_.size()));
   with_kernel<D>(scene_.kernel, R_, [&](auto W) {
     using K = decltype(W);
     if (walls_.empty())
@@ -632,9 +839,9 @@ void Simulation<D>::update_free_surface() {
 template <int D>
 double Simulation<D>::front_position() const {
   double xmax = -1e300;
-  Kokkos::parallel_reduce("ondine::Front", Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(p_.size())),
+  Kokkos::parallel_reduce("ondine::Front", Kokkos::RangePolicy<ExecSpace>(0, n_own_),
                           MaxComponent<D>{p_.get(field::Position{}), 0}, Kokkos::Max<double>(xmax));
-  return xmax + 0.5 * scene_.dx;
+  return comm_.max(xmax) + 0.5 * scene_.dx;
 }
 
 template <int D>
@@ -662,7 +869,7 @@ std::map<std::string, double> Simulation<D>::errors() const {
     const FluidBlock& b = scene_.blocks.front();
     const double k = 2.0 * M_PI / b.tg_wavelength;
     const double amp = b.tg_amplitude * std::exp(-2.0 * scene_.nu * k * k * t_);
-    const int n = static_cast<int>(p_.size());
+    const int n = n_own_;
     const auto x = p_.get(field::Position{});
     const auto u = p_.get(field::Velocity{});
     double num = 0, den = 0, linf = 0;
@@ -688,13 +895,13 @@ std::map<std::string, double> Simulation<D>::errors() const {
                               if (err > mx) mx = err;
                             },
                             Kokkos::Max<double>(linf));
-    e["velocity_l2"] = std::sqrt(num / den);
-    e["velocity_linf"] = linf / amp;
+    e["velocity_l2"] = std::sqrt(comm_.sum(num) / comm_.sum(den));
+    e["velocity_linf"] = comm_.max(linf) / amp;
     e["max_speed_decay_error"] = std::abs(d.max_speed - amp) / amp;
   }
   if (!walls_.empty()) e["wall_leaks"] = static_cast<double>(wall_leaks());
   const Reference& ref = scene_.reference;
-  const int n = static_cast<int>(p_.size());
+  const int n = n_own_;
   if (ref.kind == ReferenceKind::Poiseuille) {
     // start-up Poiseuille (Morris et al. 1997) at the current time, driven by the body force along x
     auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.get(field::Position{}));
@@ -715,7 +922,7 @@ std::map<std::string, double> Simulation<D>::errors() const {
       num += (hu(i, 0) - ue) * (hu(i, 0) - ue);
       den += ue * ue;
     }
-    e["velocity_l2"] = std::sqrt(num / den);
+    e["velocity_l2"] = std::sqrt(comm_.sum(num) / comm_.sum(den));
   } else if (ref.kind == ReferenceKind::GhiaRe100 || ref.kind == ReferenceKind::GhiaRe1000) {
     // lid-driven cavity: RMS of (u - u_Ghia)/U on the vertical centreline and of (v - v_Ghia)/U on the
     // horizontal one, Shepard-interpolated at Ghia et al.'s points (the walls' own points excluded)
@@ -757,6 +964,8 @@ std::map<std::string, double> Simulation<D>::errors() const {
       if (H - z < 3 * scene_.dx) continue;
       worst = std::max(worst, std::abs(hP(i) - scene_.rho0 * g * (H - z)));
     }
+    worst = comm_.max(worst);
+    pe = comm_.sum(pe);
     e["pressure_linf"] = worst / (scene_.rho0 * g * H);
     e["kinetic_over_potential"] = d.kinetic_energy / pe;
   }

@@ -1,0 +1,131 @@
+#pragma once
+// Device side of the domain decomposition (src/parallel/Decomposition.hpp): the
+// owner of a cell by descending the bisection tree, and the halo destinations of
+// a particle: every other rank whose ring of cells (one cell, at least R + skin,
+// around its subdomain) holds the particle's cell, with the periodic image that
+// rank sees it at.
+#include "kernels/CellList.hpp"
+#include "parallel/Decomposition.hpp"
+
+namespace ondine {
+
+// A periodic image as one code: digit k (base 3) is s_k + 1, the shift being s_k L_k.
+KOKKOS_INLINE_FUNCTION int image_code_of(const int* s, int dim) {
+  int code = 0, base = 1;
+  for (int k = 0; k < dim; ++k) {
+    code += (s[k] + 1) * base;
+    base *= 3;
+  }
+  return code;
+}
+KOKKOS_INLINE_FUNCTION int image_shift(int code, int k) {
+  for (int a = 0; a < k; ++a) code /= 3;
+  return code % 3 - 1;
+}
+
+template <int D>
+struct OrbLookup {
+  CellGrid<D> grid;                                // the global grid of the decomposition
+  Kokkos::View<OrbNode*, MemSpace> nodes;          // bisection tree, root first
+  Kokkos::View<int* [6], Kokkos::LayoutRight, MemSpace> boxes;  // per rank: lo[3], hi[3]
+
+  KOKKOS_INLINE_FUNCTION int owner_of_cell(const int* c) const {
+    int node = 0;
+    while (nodes(node).axis >= 0) node = c[nodes(node).axis] < nodes(node).cut ? nodes(node).left : nodes(node).right;
+    return nodes(node).left;
+  }
+  // owner of a position already wrapped into the periodic box (clamped at open faces)
+  KOKKOS_INLINE_FUNCTION int owner(const Vec<D>& x) const {
+    int c[D];
+    for (int k = 0; k < D; ++k) c[k] = grid.coord(x[k], k);
+    return owner_of_cell(c);
+  }
+  KOKKOS_INLINE_FUNCTION bool spans(int rank, int k) const { return boxes(rank, k) == 0 && boxes(rank, 3 + k) == grid.n[k]; }
+
+  // f(rank, image_code) once for every (rank != me, image) that needs the particle at x as a halo.
+  template <class F>
+  KOKKOS_INLINE_FUNCTION void for_each_halo_destination(const int me, const Vec<D>& x, F&& f) const {
+    int c[D];
+    for (int k = 0; k < D; ++k) c[k] = grid.coord(x[k], k);
+    int seen_rank[27], seen_code[27], nseen = 0;
+    int off[D];
+    for (int k = 0; k < D; ++k) off[k] = -1;
+    while (true) {
+      int q[D], s[D];
+      bool inside = true;
+      for (int k = 0; k < D; ++k) {
+        q[k] = c[k] + off[k];
+        s[k] = 0;
+        if (q[k] < 0 || q[k] >= grid.n[k]) {
+          if (!grid.periodic[k]) inside = false;
+          s[k] = q[k] < 0 ? 1 : -1;  // the rank over the periodic face sees x shifted by +-L
+          q[k] += s[k] * grid.n[k];
+        }
+      }
+      if (inside) {
+        const int r = owner_of_cell(q);
+        if (r != me) {
+          for (int k = 0; k < D; ++k)
+            if (spans(r, k)) s[k] = 0;  // its own grid is periodic along k
+          const int code = image_code_of(s, D);
+          bool dup = false;
+          for (int a = 0; a < nseen; ++a) dup = dup || (seen_rank[a] == r && seen_code[a] == code);
+          if (!dup) {
+            seen_rank[nseen] = r;
+            seen_code[nseen] = code;
+            ++nseen;
+            f(r, code);
+          }
+        }
+      }
+      int k = 0;
+      while (k < D && ++off[k] > 1) {
+        off[k] = -1;
+        ++k;
+      }
+      if (k == D) break;
+    }
+  }
+};
+
+// Device copy of a decomposition over `grid`.
+template <int D>
+OrbLookup<D> make_orb_lookup(const Decomposition& d, const CellGrid<D>& grid) {
+  OrbLookup<D> o;
+  o.grid = grid;
+  const auto& nodes = d.nodes();
+  o.nodes = Kokkos::View<OrbNode*, MemSpace>("ondine::Decomposition::nodes", nodes.empty() ? 1 : nodes.size());
+  auto hn = Kokkos::create_mirror_view(o.nodes);
+  if (nodes.empty()) hn(0) = OrbNode{-1, 0, 0, 0};
+  for (std::size_t k = 0; k < nodes.size(); ++k) hn(k) = nodes[k];
+  Kokkos::deep_copy(o.nodes, hn);
+  const int p = d.ranks() > 0 ? d.ranks() : 1;
+  o.boxes = Kokkos::View<int* [6], Kokkos::LayoutRight, MemSpace>("ondine::Decomposition::boxes", p);
+  auto hb = Kokkos::create_mirror_view(o.boxes);
+  for (int r = 0; r < p; ++r)
+    for (int k = 0; k < 3; ++k) {
+      hb(r, k) = d.ranks() > 0 ? d.box(r).lo[k] : 0;
+      hb(r, 3 + k) = d.ranks() > 0 ? d.box(r).hi[k] : (k < D ? grid.n[k] : 1);
+    }
+  Kokkos::deep_copy(o.boxes, hb);
+  return o;
+}
+
+// The cell grid a rank builds its neighbour lists on: its own cells plus the ring
+// of halo cells, non-periodic, except along axes its subdomain spans whole,
+// where it keeps the global grid (and its periodicity). Cells align with the
+// global grid's.
+template <int D>
+CellGrid<D> local_cell_grid(const CellGrid<D>& global, const CellBox& b) {
+  CellGrid<D> g = global;
+  for (int k = 0; k < D; ++k) {
+    if (b.lo[k] == 0 && b.hi[k] == global.n[k]) continue;
+    const double size = 1.0 / global.inv_size[k];
+    g.lo[k] = global.lo[k] + (b.lo[k] - 1) * size;
+    g.n[k] = b.hi[k] - b.lo[k] + 2;
+    g.periodic[k] = false;
+  }
+  return g;
+}
+
+}  // namespace ondine
