@@ -9,18 +9,21 @@
 
 namespace ondine {
 
-// A periodic image as one code: digit k (base 3) is s_k + 1, the shift being s_k L_k.
+// A periodic image as one code: digit k (base 5) is s_k + 2, the shift being
+// s_k L_k, s_k in [-2, 2] (a particle that drifted past a periodic face since its
+// last wrap, seen across that face).
+constexpr int image_codes = 125;
 KOKKOS_INLINE_FUNCTION int image_code_of(const int* s, int dim) {
   int code = 0, base = 1;
   for (int k = 0; k < dim; ++k) {
-    code += (s[k] + 1) * base;
-    base *= 3;
+    code += (s[k] + 2) * base;
+    base *= 5;
   }
   return code;
 }
 KOKKOS_INLINE_FUNCTION int image_shift(int code, int k) {
-  for (int a = 0; a < k; ++a) code /= 3;
-  return code % 3 - 1;
+  for (int a = 0; a < k; ++a) code /= 5;
+  return code % 5 - 2;
 }
 
 template <int D>
@@ -42,12 +45,22 @@ struct OrbLookup {
   }
   KOKKOS_INLINE_FUNCTION bool spans(int rank, int k) const { return boxes(rank, k) == 0 && boxes(rank, 3 + k) == grid.n[k]; }
 
-  // f(rank, image_code) once for every (rank != me, image) that needs the particle at x as a halo.
+  // f(rank, image_code) once for every (rank != me, image) that needs the particle
+  // at x as a halo. Owned positions are wrapped only at migration, so x may lie
+  // past a periodic face: its cell is that of the wrapped position, and the image
+  // includes the wrap.
   template <class F>
   KOKKOS_INLINE_FUNCTION void for_each_halo_destination(const int me, const Vec<D>& x, F&& f) const {
-    int c[D];
-    for (int k = 0; k < D; ++k) c[k] = grid.coord(x[k], k);
-    int seen_rank[27], seen_code[27], nseen = 0;
+    int c[D], w[D];
+    for (int k = 0; k < D; ++k) {
+      w[k] = 0;
+      if (grid.periodic[k]) {
+        const double len = grid.n[k] / grid.inv_size[k];
+        w[k] = -static_cast<int>(kmath::floor((x[k] - grid.lo[k]) / len));
+      }
+      c[k] = grid.coord(x[k] + w[k] * (grid.n[k] / grid.inv_size[k]), k);
+    }
+    int seen_rank[27], seen_code[27], nseen = 0;  // at most 3^D destinations
     int off[D];
     for (int k = 0; k < D; ++k) off[k] = -1;
     while (true) {
@@ -65,8 +78,9 @@ struct OrbLookup {
       if (inside) {
         const int r = owner_of_cell(q);
         if (r != me) {
-          for (int k = 0; k < D; ++k)
-            if (spans(r, k)) s[k] = 0;  // its own grid is periodic along k
+          // the receiver's grid is periodic along the axes it spans: it takes the
+          // wrapped position there
+          for (int k = 0; k < D; ++k) s[k] = spans(r, k) ? w[k] : s[k] + w[k];
           const int code = image_code_of(s, D);
           bool dup = false;
           for (int a = 0; a < nseen; ++a) dup = dup || (seen_rank[a] == r && seen_code[a] == code);

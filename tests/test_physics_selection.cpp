@@ -68,7 +68,11 @@ TEST_CASE("A minimal scene launches no kernel and allocates no field it does not
   CHECK_FALSE(any_contains(kernels_launched, "DensityGradient"));
   CHECK_FALSE(any_contains(kernels_launched, "BackgroundPressure"));
   CHECK_FALSE(any_contains(views_allocated, "density_gradient"));
-  CHECK_FALSE(any_contains(views_allocated, "x_sum"));  // RK4 sums: not with the midpoint scheme
+  CHECK_FALSE(any_contains(views_allocated, "stage_position_sum"));  // RK4 sums: not with the midpoint scheme
+  // one rank: no decomposition, migration or halo exchange
+  CHECK_FALSE(any_contains(kernels_launched, "ondine::Halo"));
+  CHECK_FALSE(any_contains(kernels_launched, "ondine::Migrate"));
+  CHECK_FALSE(any_contains(kernels_launched, "ondine::Decomposition"));
   CHECK(views_allocated.count("ondine::particles::position") == 1);
 }
 
@@ -85,5 +89,5 @@ TEST_CASE("The full scheme launches and allocates what its terms need", "[physic
   CHECK(kernels_launched.count("ondine::DensityGradient") == 1);
   CHECK(kernels_launched.count("ondine::BackgroundPressure::min") == 1);
   CHECK(views_allocated.count("ondine::particles::density_gradient") == 1);
-  CHECK(views_allocated.count("ondine::Integrator::x_sum") == 1);
+  CHECK(views_allocated.count("ondine::particles::stage_position_sum") == 1);
 }

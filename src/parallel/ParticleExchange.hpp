@@ -136,7 +136,7 @@ struct ExclusiveScan {
   }
 };
 
-// key = (dest * n + i) * 27 + image
+// key = (dest * n + i) * image_codes + image
 template <int D>
 struct HaloKeys {
   OrbLookup<D> orb;
@@ -147,7 +147,7 @@ struct HaloKeys {
   int me;
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     int p = offset(i);
-    orb.for_each_halo_destination(me, load<D>(x, i), [&](int r, int code) { keys(p++) = (r * n + i) * 27 + code; });
+    orb.for_each_halo_destination(me, load<D>(x, i), [&](int r, int code) { keys(p++) = (r * n + i) * image_codes + code; });
   }
 };
 
@@ -159,8 +159,8 @@ struct DecodeKeys {
   KOKKOS_INLINE_FUNCTION void operator()(const int e) const {
     std::int64_t k = keys(e);
     if (with_code) {
-      code(e) = static_cast<int>(k % 27);
-      k /= 27;
+      code(e) = static_cast<int>(k % image_codes);
+      k /= image_codes;
     }
     index(e) = static_cast<int>(k % n);
     Kokkos::atomic_increment(&per_rank(static_cast<int>(k / n)));

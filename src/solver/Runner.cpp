@@ -49,6 +49,8 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
                             " m; the case has dimension " + std::to_string(D) + " and dx = " + std::to_string(scene.dx) + " m");
   }
   Simulation<D> sim(scene, restarting ? &restart : nullptr);
+  if (restarting && sim.state_checksum() != restart.header.checksum)
+    throw CheckpointError(opt.restart + ": the particle state does not match the checksum stored with it: the file is corrupted");
   if (root) fs::create_directories(opt.out_dir);
   comm.barrier();
   SnapshotWriter snapshots(opt.out_dir, scene.name, comm);

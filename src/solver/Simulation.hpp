@@ -147,7 +147,7 @@ class Simulation {
   int n_own_ = 0;
   std::int64_t lattice_first_ = 0;
   bool halos_fresh_ = true;
-  double tau_ = 1.0;
+  double tau_ = 1.0, achieved_tau_ = 2.0;
   int rebalances_ = 0;
   FluxFunction<D> flux_ = nullptr;
   WallModel<D> walls_;

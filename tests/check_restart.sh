@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# A run stopped after HALF steps and restarted from its checkpoint (on NP_RESTART
+# ranks) ends where an uninterrupted run of STEPS steps ends (on NP ranks), within
+# TOL relative (0: bitwise), field by field, particles matched by id.
+# usage: check_restart.sh ONDINE COMPARE CASE OUT NP NP_RESTART STEPS HALF TOL [--set ...]
+set -euo pipefail
+ondine=$1; compare=$2; case_file=$3; out=$4; np=$5; np2=$6; steps=$7; half=$8; tol=$9; shift 9
+mpirun=(mpirun --allow-run-as-root --oversubscribe)
+export OMP_NUM_THREADS=1
+rm -rf "$out"
+"${mpirun[@]}" -np "$np" "$ondine" run "$case_file" --out "$out/whole" --quiet --set time.max_steps=$steps \
+  --set checkpoint.every_steps=$half "$@"
+"${mpirun[@]}" -np "$np" "$ondine" run "$case_file" --out "$out/parts" --quiet --set time.max_steps=$half "$@"
+"${mpirun[@]}" -np "$np2" "$ondine" run "$case_file" --out "$out/parts" --quiet --set time.max_steps=$steps \
+  --restart "$out/parts/checkpoint.h5" "$@"
+grep -q "\"restarted_from\"" "$out/parts/summary.json"
+a=$(ls "$out/whole"/*_0*.h5 | sort | tail -1); b=$(ls "$out/parts"/*_0*.h5 | sort | tail -1)
+echo "uninterrupted ($np ranks) vs restarted at step $half ($np -> $np2 ranks):"
+"$compare" "$a" "$b" "$tol"
