@@ -13,6 +13,8 @@
 #include <Kokkos_Timer.hpp>
 
 #include <cstdint>
+#include <map>
+#include <string>
 #include <vector>
 
 #include "kernels/FluidRegion.hpp"
@@ -273,7 +275,8 @@ class ParticleExchange {
     Kokkos::Timer timer;
     const int total = static_cast<int>(send_index_.extent(0));
     const int width = (width_of<field_view_t<Tags, D>>() + ...);
-    Rows out("ondine::Halo::send", total, width), in("ondine::Halo::recv", n_halo_, width);
+    Buffers& b = buffers(width, total, n_halo_);
+    const Rows out = b.out, in = b.in;
     int col = 0;
     auto pack = [&](auto tag) {
       using V = field_view_t<decltype(tag), D>;
@@ -284,7 +287,9 @@ class ParticleExchange {
       col += width_of<V>();
     };
     (pack(tags), ...);
-    move_rows(out, send_counts_, in, recv_counts_, width, comm);
+    Kokkos::deep_copy(b.h_out, out);
+    comm.exchange_known(b.h_out.data(), send_counts_, b.h_in.data(), recv_counts_, width);
+    Kokkos::deep_copy(in, b.h_in);
     col = 0;
     auto unpack = [&](auto tag) {
       using V = field_view_t<decltype(tag), D>;
@@ -300,6 +305,24 @@ class ParticleExchange {
   double seconds() const { return seconds_; }          // wall time in migration and halo exchange
 
  private:
+  // send and receive buffers of the halo refreshes, by row width, kept between calls
+  struct Buffers {
+    exchange::Rows out, in;
+    exchange::Rows::HostMirror h_out, h_in;
+  };
+  Buffers& buffers(int width, int n_out, int n_in) {
+    Buffers& b = buffers_[width];
+    auto fit = [width](exchange::Rows& v, exchange::Rows::HostMirror& h, int n, const char* label) {
+      if (static_cast<int>(v.extent(0)) == n && v.is_allocated()) return;
+      v = exchange::Rows(Kokkos::view_alloc(Kokkos::WithoutInitializing, std::string(label)), n, width);
+      h = Kokkos::create_mirror_view(v);
+    };
+    fit(b.out, b.h_out, n_out, "ondine::Halo::send");
+    fit(b.in, b.h_in, n_in, "ondine::Halo::recv");
+    return b;
+  }
+  std::map<int, Buffers> buffers_;
+
   static void move_rows(const exchange::Rows& out, const std::vector<int>& send_counts, const exchange::Rows& in,
                         const std::vector<int>& recv_counts, int width, const Communicator& comm) {
     auto h_out = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), out);
