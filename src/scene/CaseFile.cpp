@@ -236,7 +236,7 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
   const Reader r(path, apply_overrides(root, overrides));
 
   r.only_keys(root, "", {"name", "dimension", "domain", "fluid", "discretisation", "fluid_blocks", "walls", "forces",
-                         "scheme", "time", "probes", "reference", "parallel", "checkpoint"});
+                         "scheme", "time", "probes", "wave_gauges", "reference", "parallel", "checkpoint"});
   Scene s;
   s.source_file = path;
   if (root["name"]) {
@@ -557,6 +557,33 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
           r.fail(pr[i]["position"], key + ".position", "the probe lies outside the domain");
       s.probes.push_back(p);
     }
+  }
+
+  // wave gauges: vertical lines along the last axis
+  if (const YAML::Node wg = root["wave_gauges"]) {
+    if (!wg.IsSequence()) r.fail(wg, "wave_gauges", "expected a list of {name, position, bottom, top}");
+    for (std::size_t i = 0; i < wg.size(); ++i) {
+      const std::string key = "wave_gauges[" + std::to_string(i) + "]";
+      r.only_keys(wg[i], key, {"name", "position", "bottom", "top"});
+      WaveGauge g;
+      g.name = r.text(r.required(wg[i], key, "name"), key + ".name", "a gauge name");
+      if (g.name.find_first_of(", \"") != std::string::npos)
+        r.fail(wg[i]["name"], key + ".name", "expected a name without commas, spaces or quotes (it heads CSV columns)");
+      for (const WaveGauge& q : s.wave_gauges)
+        if (q.name == g.name) r.fail(wg[i]["name"], key + ".name", "duplicate wave gauge name '" + g.name + "'");
+      const Vec3 p = r.vector(r.required(wg[i], key, "position"), key + ".position", D - 1, " (m, the horizontal coordinates)");
+      for (int k = 0; k < D - 1; ++k) {
+        g.position[k] = p[k];
+        if (p[k] < s.domain.min[k] || p[k] > s.domain.max[k])
+          r.fail(wg[i]["position"], key + ".position", "the gauge lies outside the domain");
+      }
+      g.bottom = r.number(r.required(wg[i], key, "bottom"), key + ".bottom", "a height (m)");
+      g.top = r.number(r.required(wg[i], key, "top"), key + ".top", "a height (m)");
+      if (!(g.top > g.bottom)) r.fail(wg[i]["top"], key + ".top", "expected top > bottom");
+      s.wave_gauges.push_back(g);
+    }
+    if (!(s.gravity[D - 1] < 0))
+      r.fail(wg, "wave_gauges", "wave gauges measure along the last axis: they need gravity pointing down it (forces.gravity)");
   }
 
   // reference solution

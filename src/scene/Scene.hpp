@@ -61,6 +61,14 @@ struct Probe {
   Vec3 position{0, 0, 0};
 };
 
+// A wave gauge: a vertical line (along -gravity, the last axis) at `position`
+// (its other coordinates), from `bottom` to `top` (m along that axis).
+struct WaveGauge {
+  std::string name;
+  Vec3 position{0, 0, 0};
+  double bottom = 0, top = 0;
+};
+
 struct Scene {
   std::string name;         // case name (output folder name)
   std::string source_file;  // the YAML file it came from
@@ -111,6 +119,7 @@ struct Scene {
   std::int64_t max_steps = -1;   // -1: no limit
   double damping_time = 0;       // s: initial relaxation, u *= exp(-dt / (damping_time / 10)) while t < damping_time
   std::vector<Probe> probes;
+  std::vector<WaveGauge> wave_gauges;
   Reference reference;
 
   // distributed runs: rebalance when tau = min work / max work (5.30) falls below this

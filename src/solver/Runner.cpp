@@ -57,7 +57,11 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
   const double t_start = sim.time();
 
   CsvSeries diag_csv(opt.out_dir + "/diagnostics.csv", root), probe_csv(opt.out_dir + "/probes.csv", root),
-      wall_csv(opt.out_dir + "/walls.csv", root), front_csv(opt.out_dir + "/front.csv", root);
+      wall_csv(opt.out_dir + "/walls.csv", root), front_csv(opt.out_dir + "/front.csv", root),
+      wave_csv(opt.out_dir + "/waves.csv", root);
+  wave_csv.text() << "time,step";
+  for (const WaveGauge& g : scene.wave_gauges) wave_csv.text() << "," << g.name << ".elevation";
+  wave_csv.text() << "\n";
   diag_csv.text() << "time,step,dt,mass,momentum_x,momentum_y" << (D == 3 ? ",momentum_z" : "")
                   << ",kinetic_energy,max_speed,rho_min,rho_max,outside_domain,balance\n";
   probe_csv.text() << "time,step";
@@ -97,6 +101,7 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
         max_outside = std::max(max_outside, static_cast<std::int64_t>(row[c + 4]));
       }
     probe_csv.resume(t_start);
+    wave_csv.resume(t_start);
     wall_csv.resume(t_start);
     if (dam_break && front_csv.resume(t_start * std::sqrt(2 * g / a)))
       for (const auto& row : front_csv.resumed_rows())
@@ -136,6 +141,13 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
       }
       probe_csv.text() << "\n";
       probe_csv.flush();
+    }
+    if (!scene.wave_gauges.empty()) {
+      const auto levels = sim.wave_elevations();
+      wave_csv.text() << sim.time() << "," << sim.steps();
+      for (double z : levels) wave_csv.text() << "," << z;
+      wave_csv.text() << "\n";
+      wave_csv.flush();
     }
     diag_csv.flush();
     diverged = !d.finite;

@@ -97,6 +97,8 @@ class Simulation {
   const Diagnostics& initial_diagnostics() const { return initial_; }
   std::vector<ProbeSample> sample_probes() const;
   std::vector<ProbeSample> sample_at(const std::vector<Vec3>& points) const;
+  // free-surface elevation at each of the scene's wave gauges (kernels/WaveGauge.hpp)
+  std::vector<double> wave_elevations();
   // Error figures against the analytic solution the scene has, if any.
   std::map<std::string, double> errors() const;
 

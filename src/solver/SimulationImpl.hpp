@@ -18,6 +18,7 @@
 #include "kernels/StateCheck.hpp"
 #include "kernels/ProbeSum.hpp"
 #include "kernels/TimeStep.hpp"
+#include "kernels/WaveGauge.hpp"
 #include "scene/CaseFile.hpp"
 #include "solver/FluxSelect.hpp"
 #include "solver/KernelDispatch.hpp"
@@ -739,6 +740,38 @@ std::vector<ProbeSample> Simulation<D>::sample_at(const std::vector<Vec3>& point
       }
     });
     out.push_back(s);
+  }
+  return out;
+}
+
+template <int D>
+std::vector<double> Simulation<D>::wave_elevations() {
+  std::vector<double> out;
+  if (scene_.wave_gauges.empty()) return out;
+  ensure_neighbours();  // the particle cell list is current
+  refresh_halos();
+  const double step = 0.25 * scene_.dx;
+  for (const WaveGauge& g : scene_.wave_gauges) {
+    const int ns = static_cast<int>(std::floor((g.top - g.bottom) / step)) + 1;
+    Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> pts("ondine::WaveGauge::points", ns);
+    Kokkos::View<double*, MemSpace> sum("ondine::WaveGauge::sum", ns);
+    auto hp = Kokkos::create_mirror_view(pts);
+    std::vector<double> z(ns);
+    for (int s = 0; s < ns; ++s) {  // the sample points of the line (not particles)
+      z[s] = g.bottom + s * step;
+      for (int k = 0; k < D - 1; ++k) hp(s, k) = g.position[k];
+      hp(s, D - 1) = z[s];
+    }
+    Kokkos::deep_copy(pts, hp);
+    with_kernel<D>(scene_.kernel, R_, [&](auto W) {
+      Kokkos::parallel_for("ondine::WaveGauge", Kokkos::RangePolicy<ExecSpace>(0, ns),
+                           GaugeShepardSum<D, decltype(W)>{cells_, box_, W, R_ * R_, n_own_, p_.get(field::Position{}),
+                                                           p_.get(field::Density{}), p_.get(field::Mass{}), pts, sum});
+    });
+    std::vector<double> shepard(ns);
+    Kokkos::deep_copy(Kokkos::View<double*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(shepard.data(), ns), sum);
+    comm_.sum_in_place(shepard);
+    out.push_back(gauge_level(z.data(), shepard.data(), ns));
   }
   return out;
 }
