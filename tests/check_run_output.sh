@@ -21,4 +21,9 @@ h5dump -a time "$out/taylor_green_2d_000002.h5" | grep -q '0.05'
 grep -q 'taylor_green_2d_000002.h5:/position' "$out/taylor_green_2d.xmf"
 grep -q '"particles": 400' "$out/summary.json"
 grep -q "\"backend\": \"$backend\"" "$out/summary.json"
+# a second, shorter run into the same folder leaves none of the first run's snapshots
+"$ondine" run "$src/cases/taylor_green_2d.yaml" --out "$out" --quiet \
+  --set discretisation.dx=0.05 --set time.duration=0.025 --set time.output_interval=0.025
+n=$(ls "$out"/taylor_green_2d_*.h5 | wc -l)
+[ "$n" -eq 2 ] || { echo "a rerun left stale snapshots: $n files, expected 2"; exit 1; }
 echo "run output OK"

@@ -3,6 +3,7 @@
 #include <hdf5.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -76,7 +77,23 @@ void SnapshotWriter::write(const ParticleSet<D>& p, double time, std::int64_t st
   if (comm_.rank() == 0) write_index();
 }
 
+void SnapshotWriter::remove_from(std::size_t first) const {
+  namespace fs = std::filesystem;
+  if (comm_.rank() == 0 && fs::is_directory(dir_)) {
+    const std::string prefix = name_ + "_";
+    for (const auto& e : fs::directory_iterator(dir_)) {
+      const std::string f = e.path().filename().string();
+      if (f.size() != prefix.size() + 9 || f.compare(0, prefix.size(), prefix) != 0 || f.compare(f.size() - 3, 3, ".h5") != 0) continue;
+      const std::string digits = f.substr(prefix.size(), 6);
+      if (digits.find_first_not_of("0123456789") != std::string::npos) continue;
+      if (std::stoul(digits) >= first) fs::remove(e.path());
+    }
+  }
+  comm_.barrier();
+}
+
 void SnapshotWriter::resume(std::size_t count) {
+  remove_from(count);
   entries_.clear();
   for (std::size_t k = 0; k < count; ++k) {
     const std::string fname = file_name(k);

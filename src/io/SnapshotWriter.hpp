@@ -29,8 +29,12 @@ class SnapshotWriter {
   // the first `owned` particles of p (all of them by default)
   template <int D>
   void write(const ParticleSet<D>& p, double time, std::int64_t step, std::int64_t owned = -1);
-  // a restarted run: takes the first `count` snapshots already in the folder as its own
+  // a restarted run: takes the first `count` snapshots already in the folder as its
+  // own, and removes the later ones (written after the checkpoint)
   void resume(std::size_t count);
+  // removes this case's snapshots numbered `first` or more from the folder, so that
+  // a folder never mixes the snapshots of two runs (a new run calls it with 0)
+  void remove_from(std::size_t first) const;
 
   const std::vector<SnapshotEntry>& entries() const { return entries_; }
   std::string index_path() const;

@@ -54,6 +54,7 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
   if (root) fs::create_directories(opt.out_dir);
   comm.barrier();
   SnapshotWriter snapshots(opt.out_dir, scene.name, comm);
+  if (!restarting) snapshots.remove_from(0);
   const double t_start = sim.time();
 
   CsvSeries diag_csv(opt.out_dir + "/diagnostics.csv", root), probe_csv(opt.out_dir + "/probes.csv", root),
