@@ -24,6 +24,7 @@ namespace {
 struct Rung {
   double dx;
   bool full_only;
+  bool accuracy = true;  // false: only the stability figures (non_finite, max_*) are bounded on this rung
 };
 
 // One validation case: its file, the length that defines "resolution"
@@ -56,9 +57,12 @@ const std::vector<ValidationCase>& catalogue() {
        {{"pressure_linf", 0.03}, {"kinetic_over_potential", 1e-3}, {"wall_leaks", 0.5}}, {}},
       {"dam_break_2d", "cases/dam_break_2d.yaml", 0.05715, {{0.002286, false}, {0.001143, true}},
        {{"front_max_relative_error", 0.2}, {"front_speed_relative_error", 0.1}}, {}},
-      // Lid-driven cavity, Re = 1000, against Ghia et al. (1982): coarse rungs, 60 lid passages (slow: full level)
-      {"lid_driven_cavity_2d", "cases/lid_driven_cavity_2d.yaml", 1.0, {{0.04, true}, {0.02, true}},
-       {{"centreline_u_rms", 0.2}, {"centreline_v_rms", 0.2}, {"max_outside_domain", 0.5}}, {"time.output_interval=5"}},
+      // Lid-driven cavity, Re = 1000, against Ghia et al. (1982): coarse rungs, full level only
+      // (30 lid passages; 25 x 25 puts R = L/6, wider than the boundary layers: recorded, not bounded).
+      // Bounds about 15 % above the 50 x 50 figures (0.086, 0.120): a regression guard
+      {"lid_driven_cavity_2d", "cases/lid_driven_cavity_2d.yaml", 1.0, {{0.04, true, false}, {0.02, true}},
+       {{"centreline_u_rms", 0.1}, {"centreline_v_rms", 0.14}, {"max_outside_domain", 0.5}, {"non_finite", 0.5}},
+       {"time.duration=30", "time.output_interval=2"}},
       // Stiff and extreme cases (`--case stability`): each long enough to show growth, checked for
       // NaN, unbounded kinetic energy (max E_k over 1/2 M u_ref^2), density leaving [0.9, 1.1] rho0
       // and particles leaving the domain.
@@ -276,6 +280,7 @@ int run_validation(const ValidateOptions& opt) {
       nlohmann::json th = nlohmann::json::object();
       std::string errs;
       for (const auto& [name, bound] : c->thresholds) {
+        if (!r.accuracy && name != "non_finite" && name.rfind("max_", 0) != 0) continue;
         th[name] = bound;
         const auto it = rep.errors.find(name);
         const bool ok = it != rep.errors.end() && std::isfinite(it->second) && it->second <= bound;
