@@ -38,7 +38,7 @@ test: build
 	cd $(BUILD) && ctest --output-on-failure -j 1
 
 # `make validate`: the whole validation (accuracy ladders and stability suite, full level,
-# about 30 min on 2 cores); runs under $(VALIDATE_OUT), the report table and figures go into
+# about 40 min on 2 shared cores); runs under $(VALIDATE_OUT), the report table and figures go into
 # docs/validation.md (between its markers) and docs/validation/. Exits 1 when a run fails.
 VALIDATE_OUT ?= out/validation-full
 validate: build

@@ -204,7 +204,7 @@ def splice(out, doc, cases):
             shutil.copyfile(f"{out}/{name}.png", f"{fig_dir}/{name}.png")
     shutil.copyfile(f"{out}/validation.json", f"{fig_dir}/validation.json")
     body = open(f"{out}/validation.md").read().split("\n", 1)[1]  # without its title
-    body = body.replace("](", "](validation/").replace("\n## ", "\n### ").replace("\n### ###", "\n####")
+    body = body.replace("](", "](validation/").replace("\n### ", "\n#### ").replace("\n## ", "\n### ")
     text = open(doc).read()
     if BEGIN not in text or END not in text:
         sys.exit(f"plot_validation.py: {doc} has no '{BEGIN}' ... '{END}' markers")
