@@ -8,7 +8,7 @@ KOKKOS   ?= $(if $(ONDINE_KOKKOS_ROOT),$(ONDINE_KOKKOS_ROOT),$(CURDIR)/.deps/kok
 export OMP_PROC_BIND ?= spread
 export OMP_PLACES    ?= threads
 
-.PHONY: all setup configure build run test clean cuda setup-cuda
+.PHONY: all setup configure build run test clean cuda setup-cuda validate
 
 # `make cuda`: the CUDA build (compiled, not run, where there is no GPU). Kokkos 3.4.1
 # with CUDA goes to .deps/kokkos-cuda (scripts/setup-kokkos-cuda.sh), Ondine to
@@ -36,6 +36,14 @@ run: build
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j 1
+
+# `make validate`: the whole validation (accuracy ladders and stability suite, full level,
+# about 40 min on 2 shared cores); runs under $(VALIDATE_OUT), the report table and figures go into
+# docs/validation.md (between its markers) and docs/validation/. Exits 1 when a run fails.
+VALIDATE_OUT ?= out/validation-full
+validate: build
+	$(BUILD)/ondine validate --level full --case all --out $(VALIDATE_OUT); s=$$?; \
+	  /usr/bin/python3 scripts/plot_validation.py $(VALIDATE_OUT) . --docs docs/validation.md && exit $$s
 
 ifneq ($(wildcard $(CUDA_ROOT)/bin/nvcc),)
 cuda setup-cuda $(BUILD_CUDA)/CMakeCache.txt: export PATH := $(CUDA_ROOT)/bin:$(PATH)
