@@ -4,7 +4,7 @@
 // a particle: every other rank whose ring of cells (one cell, at least R + skin,
 // around its subdomain) holds the particle's cell, with the periodic image that
 // rank sees it at.
-#include "kernels/CellList.hpp"
+#include "kernels/NeighbourList.hpp"
 #include "parallel/Decomposition.hpp"
 
 namespace ondine {
@@ -99,6 +99,23 @@ struct OrbLookup {
       }
       if (k == D) break;
     }
+  }
+};
+
+// Work of each cell of the global grid for the bisection: one per particle plus
+// its neighbours in the list (the pair interactions, thesis 5.5.2).
+template <int D>
+struct CellWork {
+  CellGrid<D> grid;
+  PeriodicBox<D> box;
+  NeighbourList<D> list;
+  field_view_t<field::Position, D> x;
+  Kokkos::View<double*, MemSpace> work;
+  bool pairs;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    int c[D];
+    for (int k = 0; k < D; ++k) c[k] = grid.coord(box.wrap(x(i, k), k), k);
+    Kokkos::atomic_add(&work(grid.linear(c)), 1.0 + (pairs ? list.num_neighbours(i) : 0));
   }
 };
 

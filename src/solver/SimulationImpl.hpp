@@ -345,16 +345,8 @@ template <int D>
 void Simulation<D>::decompose(bool by_pairs) {
   const int ncell = global_grid_.cells();
   Kokkos::View<double*, MemSpace> work("ondine::Decomposition::work", ncell);
-  const auto x = p_.get(field::Position{});
-  const auto g = global_grid_;
-  const auto list = list_;
-  const auto box = box_;
-  const bool pairs = by_pairs && list_valid_;
-  Kokkos::parallel_for("ondine::Decomposition::work", Kokkos::RangePolicy<ExecSpace>(0, n_own_), KOKKOS_LAMBDA(const int i) {
-    int c[D];
-    for (int k = 0; k < D; ++k) c[k] = g.coord(box.wrap(x(i, k), k), k);
-    Kokkos::atomic_add(&work(g.linear(c)), 1.0 + (pairs ? list.num_neighbours(i) : 0));
-  });
+  Kokkos::parallel_for("ondine::Decomposition::work", Kokkos::RangePolicy<ExecSpace>(0, n_own_),
+                       CellWork<D>{global_grid_, box_, list_, p_.get(field::Position{}), work, by_pairs && list_valid_});
   std::vector<double> host(ncell);
   Kokkos::deep_copy(Kokkos::View<double*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(host.data(), ncell), work);
   comm_.sum_in_place(host);
