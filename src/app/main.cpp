@@ -48,6 +48,10 @@ int run_app(int argc, char** argv, int ranks, int rank) {
     return app.exit(e) == 0 ? 0 : 2;
   }
   if (validate->parsed()) {
+    if (ranks > 1) {
+      if (rank == 0) std::fprintf(stderr, "ondine: error: validate runs on one rank (its cases write to one folder); run it without mpirun\n");
+      return 2;
+    }
     vopt.source_dir = ONDINE_SOURCE_DIR;
     try {
       return ondine::run_validation(vopt);

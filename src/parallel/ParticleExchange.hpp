@@ -29,10 +29,19 @@ namespace exchange {
 
 using Rows = Kokkos::View<double**, Kokkos::LayoutRight, MemSpace>;
 
+// doubles per particle of a field view (1, or its static second extent), as a
+// compile-time constant usable in device code
+template <class V, bool Scalar = (V::rank == 1)>
+struct RowWidth {
+  static constexpr int value = 1;
+};
+template <class V>
+struct RowWidth<V, false> {
+  static constexpr int value = static_cast<int>(V::static_extent(1));
+};
 template <class V>
 constexpr int width_of() {
-  if constexpr (V::rank == 1) return 1;
-  else return V::static_extent(1);
+  return RowWidth<V>::value;
 }
 
 // rows(e, col ..) = v(index(e)), positions shifted to the image `code(e)` when given
@@ -48,7 +57,7 @@ struct PackRows {
     if constexpr (V::rank == 1) {
       rows(e, col) = static_cast<double>(v(i));
     } else {
-      for (int k = 0; k < width_of<V>(); ++k)
+      for (int k = 0; k < RowWidth<V>::value; ++k)
         rows(e, col + k) = v(i, k) + (code.extent(0) > 0 ? image_shift(code(e), k) * len[k] : 0.0);
     }
   }
@@ -64,7 +73,7 @@ struct UnpackRows {
     if constexpr (V::rank == 1) {
       v(first + e) = static_cast<typename V::value_type>(rows(e, col));
     } else {
-      for (int k = 0; k < width_of<V>(); ++k) v(first + e, k) = rows(e, col + k);
+      for (int k = 0; k < RowWidth<V>::value; ++k) v(first + e, k) = rows(e, col + k);
     }
   }
 };
@@ -77,7 +86,7 @@ struct GatherRows {
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     if constexpr (V::rank == 1) out(i) = in(order(i));
     else
-      for (int k = 0; k < width_of<V>(); ++k) out(i, k) = in(order(i), k);
+      for (int k = 0; k < RowWidth<V>::value; ++k) out(i, k) = in(order(i), k);
   }
 };
 

@@ -228,12 +228,12 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
     if (sig >= 0) {
       report.status = "interrupted";
       report.signal = sig;
-      if (sim.time() > snapshots.entries().back().time) record();
+      if (snapshots.entries().empty() || sim.time() > snapshots.entries().back().time) record();
       break;
     }
     if (scene.max_steps > 0 && sim.steps() >= scene.max_steps) {
       report.status = "max_steps";
-      if (sim.time() > snapshots.entries().back().time) record();
+      if (snapshots.entries().empty() || sim.time() > snapshots.entries().back().time) record();
       break;
     }
     const auto now = Clock::now();
