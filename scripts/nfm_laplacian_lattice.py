@@ -40,3 +40,25 @@ for Rdx in (3,4):
   for k0 in range(0,5):
     L,g,gd,Ld=lap(k0,Rdx,lambda y: y*y)
     print(Rdx,k0,'L(y^2)=%.4f (exact 2)  gamma=%.4f  discrete sum=%.4f  L with discrete gamma=%.4f'%(L,g,gd,Ld))
+
+def lap_f(k0,Rdx,f2):  # generic field f2(x,y), particle at x=0
+    dx=1.0; R=Rdx*dx; yi=(k0+0.5)*dx; n=int(Rdx)+2; s=0.0
+    for i in range(-n,n+1):
+        for k in range(0,k0+n+1):
+            if i==0 and k==k0: continue
+            xj=i*dx; yj=(k+0.5)*dx; xij=np.array([-xj, yi-yj]); r=np.hypot(*xij)
+            if r>=R: continue
+            s+=dx*dx*(f2(0,yi)-f2(xj,yj))*np.dot(xij,dW(r,R)/r*xij)/r**2
+    dn=-yi; wall=0
+    if yi<R:
+        L=np.sqrt(R*R-yi*yi)
+        wall=integrate.quad(lambda x: W(np.hypot(x,yi),R)*(f2(0,yi)-f2(x,0.0))/dn, -L, L)[0]
+    gam=integrate.dblquad(lambda y,x: W(np.hypot(x,yi-y),R), -R, R, lambda x:0, lambda x: yi+R)[0]
+    return 2/gam*(s+wall)
+print("correction by L(|x - x_i|^2) = 4 (2D):")
+for Rdx in (3,4):
+  for k0 in range(0,5):
+    ly=lap_f(k0,Rdx,lambda x,y: y*y)
+    lr=lap_f(k0,Rdx,lambda x,y: x*x+(y-(k0+0.5))**2)
+    lyy=lap_f(k0,Rdx,lambda x,y: (y-(k0+0.5))**2)
+    print(Rdx,k0,'L(y^2)=%.4f  L(r^2)=%.4f  corrected=%.4f   L((y-yi)^2)=%.4f'%(ly,lr,ly*4/lr,lyy))
