@@ -539,6 +539,17 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
       s.checkpoint_every_wall_seconds = r.non_negative(cp["every_wall_seconds"], "checkpoint.every_wall_seconds", " (s)");
   }
 
+  // the name of a probe or gauge: it heads CSV columns, so no separators, and unique
+  auto csv_column_name = [&r](const YAML::Node& item, const std::string& key, const std::string& what,
+                              const std::vector<std::string>& taken) {
+    const std::string name = r.text(r.required(item, key, "name"), key + ".name", "a " + what + " name");
+    if (name.find_first_of(", \"") != std::string::npos)
+      r.fail(item["name"], key + ".name", "expected a name without commas, spaces or quotes (it heads CSV columns)");
+    for (const std::string& t : taken)
+      if (t == name) r.fail(item["name"], key + ".name", "duplicate " + what + " name '" + name + "'");
+    return name;
+  };
+
   // probes
   if (const YAML::Node pr = root["probes"]) {
     if (!pr.IsSequence()) r.fail(pr, "probes", "expected a list of {name, position}");
@@ -546,11 +557,9 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
       const std::string key = "probes[" + std::to_string(i) + "]";
       r.only_keys(pr[i], key, {"name", "position"});
       Probe p;
-      p.name = r.text(r.required(pr[i], key, "name"), key + ".name", "a probe name");
-      if (p.name.find_first_of(", \"") != std::string::npos)
-        r.fail(pr[i]["name"], key + ".name", "expected a name without commas, spaces or quotes (it heads CSV columns)");
-      for (const Probe& q : s.probes)
-        if (q.name == p.name) r.fail(pr[i]["name"], key + ".name", "duplicate probe name '" + p.name + "'");
+      std::vector<std::string> taken;
+      for (const Probe& q : s.probes) taken.push_back(q.name);
+      p.name = csv_column_name(pr[i], key, "probe", taken);
       p.position = r.vector(r.required(pr[i], key, "position"), key + ".position", D, " (m)");
       for (int k = 0; k < D; ++k)
         if (p.position[k] < s.domain.min[k] || p.position[k] > s.domain.max[k])
@@ -566,11 +575,9 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
       const std::string key = "wave_gauges[" + std::to_string(i) + "]";
       r.only_keys(wg[i], key, {"name", "position", "bottom", "top"});
       WaveGauge g;
-      g.name = r.text(r.required(wg[i], key, "name"), key + ".name", "a gauge name");
-      if (g.name.find_first_of(", \"") != std::string::npos)
-        r.fail(wg[i]["name"], key + ".name", "expected a name without commas, spaces or quotes (it heads CSV columns)");
-      for (const WaveGauge& q : s.wave_gauges)
-        if (q.name == g.name) r.fail(wg[i]["name"], key + ".name", "duplicate wave gauge name '" + g.name + "'");
+      std::vector<std::string> taken;
+      for (const WaveGauge& q : s.wave_gauges) taken.push_back(q.name);
+      g.name = csv_column_name(wg[i], key, "wave gauge", taken);
       const Vec3 p = r.vector(r.required(wg[i], key, "position"), key + ".position", D - 1, " (m, the horizontal coordinates)");
       for (int k = 0; k < D - 1; ++k) {
         g.position[k] = p[k];
