@@ -125,3 +125,16 @@ TEST_CASE("Bad case files get a message naming file, line and key", "[unit][case
     CHECK_THAT(m, Contains("cases/box.yaml:") && Contains("not valid YAML"));
   }
 }
+
+TEST_CASE("A key written twice in a mapping is refused with its line", "[case]") {
+  const std::string y = R"(dimension: 2
+domain: {min: [0, 0], max: [1, 1]}
+fluid: {rho0: 1000, sound_speed: 10}
+discretisation:
+  dx: 0.02
+  dx: 0.01
+fluid_blocks: [{min: [0, 0], max: [1, 0.5]}]
+time: {duration: 1, output_interval: 1}
+)";
+  CHECK_THROWS_WITH(ondine::parse_case(y, "dup.yaml"), Catch::Contains("dup.yaml:6:3: key 'discretisation.dx': written twice"));
+}

@@ -224,6 +224,26 @@ std::size_t count_particles(const Scene& s) {
   return n;
 }
 
+// yaml-cpp keeps both entries of a key written twice in a mapping and reads the
+// first: a second `dx:` further down would be silently ignored. Refused instead.
+static void reject_duplicate_keys(const YAML::Node& n, const std::string& path, const std::string& where) {
+  if (n.IsMap()) {
+    std::set<std::string> seen;
+    for (const auto& kv : n) {
+      const std::string key = kv.first.Scalar();
+      const std::string full = where.empty() ? key : where + "." + key;
+      if (!seen.insert(key).second) {
+        const YAML::Mark mk = kv.first.Mark();
+        throw CaseError(path + ":" + std::to_string(mk.line + 1) + ":" + std::to_string(mk.column + 1) + ": key '" + full +
+                        "': written twice in the same mapping; keep one");
+      }
+      reject_duplicate_keys(kv.second, path, full);
+    }
+  } else if (n.IsSequence()) {
+    for (std::size_t i = 0; i < n.size(); ++i) reject_duplicate_keys(n[i], path, where + "[" + std::to_string(i) + "]");
+  }
+}
+
 Scene parse_case(const std::string& text, const std::string& path, const std::vector<std::string>& overrides) {
   YAML::Node root;
   try {
@@ -233,6 +253,7 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
                     ": not valid YAML: " + e.msg);
   }
   if (!root.IsMap()) throw CaseError(path + ": expected a YAML mapping at the top level (see docs/case-file.md)");
+  reject_duplicate_keys(root, path, "");
   const Reader r(path, apply_overrides(root, overrides));
 
   r.only_keys(root, "", {"name", "dimension", "domain", "fluid", "discretisation", "fluid_blocks", "walls", "forces",
