@@ -138,3 +138,15 @@ time: {duration: 1, output_interval: 1}
 )";
   CHECK_THROWS_WITH(ondine::parse_case(y, "dup.yaml"), Catch::Contains("dup.yaml:6:3: key 'discretisation.dx': written twice"));
 }
+
+TEST_CASE("A wall reaching beyond a periodic face is refused", "[case]") {
+  const std::string y = R"(dimension: 2
+domain: {min: [0, -0.1], max: [0.4, 1.1], periodic: [true, false]}
+fluid: {rho0: 1000, sound_speed: 10}
+discretisation: {dx: 0.04}
+walls: [{name: bottom, points: [[-0.1, 0], [0.4, 0]], fluid_side: left}]
+fluid_blocks: [{min: [0, 0], max: [0.4, 1]}]
+time: {duration: 1, output_interval: 1}
+)";
+  CHECK_THROWS_WITH(ondine::parse_case(y, "wall.yaml"), Catch::Contains("key 'walls[0].points': a wall must lie within the domain along the periodic axis x"));
+}

@@ -432,6 +432,17 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
         if (std::hypot(b[0] - a[0], b[1] - a[1]) < 1e-9 * s.dx)
           r.fail(w["points"] ? w["points"] : w, key + ".points", "segment " + std::to_string(k) + " has zero length (repeated point)");
       }
+      // along a periodic axis the wall's images one period away are added, so the wall
+      // itself must lie within one period: a wall across the axis spans exactly one
+      for (int k = 0; k < 2; ++k) {
+        if (!s.periodic[k]) continue;
+        const double tol = 1e-9 * (s.domain.max[k] - s.domain.min[k]);
+        for (const auto& pt : wall.points)
+          if (pt[k] < s.domain.min[k] - tol || pt[k] > s.domain.max[k] + tol)
+            r.fail(w["points"] ? w["points"] : w, key + ".points",
+                   std::string("a wall must lie within the domain along the periodic axis ") + "xyz"[k] +
+                       " (its periodic images are added; a wall across the axis spans exactly one period)");
+      }
       if (w["fluid_side"]) {
         const std::string side = wall.closed ? r.word(w["fluid_side"], key + ".fluid_side", {"inside", "outside"})
                                              : r.word(w["fluid_side"], key + ".fluid_side", {"left", "right"});
