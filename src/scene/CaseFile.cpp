@@ -557,7 +557,8 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
 
   // distributed runs and checkpoints (docs/parallel.md)
   if (const YAML::Node par = root["parallel"]) {
-    r.only_keys(par, "parallel", {"rebalance_threshold"});
+    r.only_keys(par, "parallel", {"rebalance_threshold", "weight"});
+    if (par["weight"]) s.balance_by_pairs = r.word(par["weight"], "parallel.weight", {"pairs", "particles"}) == "pairs";
     if (par["rebalance_threshold"]) {
       s.rebalance_threshold = r.positive(par["rebalance_threshold"], "parallel.rebalance_threshold", "");
       if (s.rebalance_threshold > 1)

@@ -124,6 +124,7 @@ struct Scene {
 
   // distributed runs: rebalance when tau = min work / max work (5.30) falls below this
   double rebalance_threshold = 0.9;
+  bool balance_by_pairs = true;  // work of a cell: its pair interactions (5.5.2), or its particles
   // checkpoints (besides the one at a clean stop and at the end): 0 = never
   std::int64_t checkpoint_every_steps = 0;
   double checkpoint_every_wall_seconds = 0;

@@ -322,13 +322,14 @@ void Simulation<D>::rebuild_neighbours(bool may_rebalance) {
   if (!comm_.serial()) {
     // tau = min work / max work over the ranks (thesis 5.30), work = pair interactions
     std::vector<double> work;
-    for (std::int64_t w : comm_.gather_all(list_.total())) work.push_back(static_cast<double>(w));
+    const std::int64_t mine = scene_.balance_by_pairs ? static_cast<std::int64_t>(list_.total()) : n_own_;
+    for (std::int64_t w : comm_.gather_all(mine)) work.push_back(static_cast<double>(w));
     tau_ = balance_indicator(work);
     // rebalance below the threshold; when cell-wide cuts cannot reach it, only once
     // the balance is clearly worse (0.05) than the last rebalance achieved
     if (may_rebalance && tau_ < std::min(scene_.rebalance_threshold, achieved_tau_ - 0.05)) {
       const double before = tau_;
-      decompose(true);
+      decompose(scene_.balance_by_pairs);
       ++rebalances_;
       rebuild_neighbours(false);
       achieved_tau_ = tau_;
