@@ -90,6 +90,11 @@ const std::vector<ValidationCase>& catalogue() {
       {"stability_hydrostatic_20s", "cases/hydrostatic_tank_2d.yaml", 0.5, {{0.05, true}, {0.025, true}},
        stable({{"max_kinetic_energy_ratio", 0.01}, {"mass_drift", 1e-12}, {"wall_leaks", 0.5}, {"kinetic_over_potential", 1e-3}}),
        {"time.duration=20", "time.output_interval=0.1"}},
+      // still water whose particles start 0.01 dx from the left wall, the right wall and the floor, two of
+      // them 0.01 dx from both walls of a corner (fluid_blocks[0].wall_clearance = 0.01), 1 s undamped:
+      // no particle may end within 0.1 dx of a wall or behind one (wall_leaks), E_k as the still tanks
+      {"stability_near_wall_start", "cases/near_wall_start_2d.yaml", 0.05, {{0.005, false}},
+       stable({{"max_kinetic_energy_ratio", 0.01}, {"wall_leaks", 0.5}}), {}},
       {"stability_stiff_viscous_channel", "cases/poiseuille_2d.yaml", 1.0, {{0.04, false}, {0.02, true}},
        stable({{"max_kinetic_energy_ratio", 2.0}}), {"fluid.viscosity=10", "time.duration=0.5", "time.output_interval=0.05"}},
       {"stability_free_fall_high_mach", "cases/free_fall_2d.yaml", 1.0, {{0.04, false}, {0.02, true}},
