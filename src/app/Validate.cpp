@@ -67,8 +67,11 @@ const std::vector<ValidationCase>& catalogue() {
       // Stiff and extreme cases (`--case stability`): each long enough to show growth, checked for
       // NaN, unbounded kinetic energy (max E_k over 1/2 M u_ref^2), density leaving [0.9, 1.1] rho0
       // and particles leaving the domain.
+      // The domain box is raised from 0.32 m to 0.6 m: the run-up jet on the right wall rises to 0.343 m
+      // (50 x 100, t = 0.465 s) through the open top of the tank, which is not a leak; the box's right
+      // face stays on the right wall, so max_outside_domain still counts particles behind it
       {"stability_dam_break_impacts", "cases/dam_break_2d.yaml", 0.05715, {{0.002286, false}, {0.001143, true}},
-       stable({{"max_kinetic_energy_ratio", 2.0}}), {"time.duration=0.6", "time.output_interval=0.01"}},
+       stable({{"max_kinetic_energy_ratio", 2.0}}), {"time.duration=0.6", "time.output_interval=0.01", "domain.max.1=0.6"}},
       // real sound speed of water (c0 = 99 U_max, about 8e4 steps) against c0 = 10 U_max: same front within 2 %;
       // the artificial viscosity alpha h c0 is kept the same physical viscosity (alpha scaled by 10 U_max / c0)
       {"stability_dam_break_real_sound_speed", "cases/dam_break_2d.yaml", 0.05715, {{0.0028575, true}},
