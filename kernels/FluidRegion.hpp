@@ -1,7 +1,8 @@
 #pragma once
 // Which lattice points of the initial fill lie in the fluid: on the fluid side
 // of every closed wall (inside a tank, outside a body; crossing-number test) and
-// at least `clearance` (dx/2) from every wall segment. Also the impermeability
+// at least `clearance` from every wall segment (dx/2 unless the block's
+// wall_clearance says otherwise). Also the impermeability
 // diagnostic: particles closer than 0.1 dx to a wall or on its solid side.
 #include "kernels/WallSet.hpp"
 
@@ -59,14 +60,22 @@ struct FluidRegion {
   }
 };
 
-// keep(i) = 1 for lattice points in the fluid region
+// keep(i) = 1 for lattice points in the fluid region, with the clearance of the
+// point's block (fluid_blocks[b].wall_clearance): block b holds the lattice indices
+// (global ids before renumbering) [block_end(b - 1), block_end(b)).
 template <int D>
 struct FluidRegionFilter {
   FluidRegion<D> region;
-  double clearance;
+  Kokkos::View<std::int64_t*, MemSpace> block_end;
+  Kokkos::View<double*, MemSpace> block_clearance;  // m
   field_view_t<field::Position, D> x;
+  field_view_t<field::GlobalId, D> id;
   Kokkos::View<int*, MemSpace> keep;
-  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { keep(i) = region.contains(load<D>(x, i), clearance) ? 1 : 0; }
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    int b = 0;
+    while (b + 1 < static_cast<int>(block_end.extent(0)) && id(i) >= block_end(b)) ++b;
+    keep(i) = region.contains(load<D>(x, i), block_clearance(b)) ? 1 : 0;
+  }
 };
 
 // Counts particles that have leaked (outside the fluid region) or come closer than `near` to a wall.

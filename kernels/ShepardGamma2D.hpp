@@ -43,4 +43,16 @@ KOKKOS_INLINE_FUNCTION double shepard_gamma_segment(const Vec<2>& x, const Vec<2
   return sign_of(dl) * inv_12pi * (sb * shepard_F(xb, d) - sa * shepard_F(xa, d));
 }
 
+// gamma_i from sigma = sum over segments of gamma_s. The divergence theorem behind (4.46)-(4.50)
+// gives gamma = 1 + sigma only where x_i lies in the fluid (the inner sphere of (4.49) is then
+// inside the domain); on the solid side of a wall (a particle that has crossed it) the inner
+// sphere is outside and gamma = sigma, which is then 1 + sigma - 1 with 1 + sigma in (1, 2].
+// Since gamma <= 1 everywhere, 1 + sigma > 1 identifies the solid side; the margin 1e-9 keeps
+// round-off of a fluid particle near distance R from a wall on the fluid side. Without this a
+// particle just behind a wall got gamma = 1.5 (clipped to 1) instead of just under 1/2.
+KOKKOS_INLINE_FUNCTION double shepard_gamma_from_sum(double sigma) {
+  const double g = 1.0 + sigma;
+  return g > 1.0 + 1e-9 ? g - 1.0 : g;
+}
+
 }  // namespace ondine

@@ -41,7 +41,7 @@ struct ShepardGammaPass {
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<D> xi = load<D>(x, i);
-    double g = 1.0;
+    double g = 0.0;  // sum of gamma_s (4.55); gamma from shepard_gamma_from_sum
     if constexpr (D == 2) {
       const int sx = box.periodic[0] ? 1 : 0, sy = box.periodic[1] ? 1 : 0;
       for (int ox = -sx; ox <= sx; ++ox)
@@ -53,6 +53,8 @@ struct ShepardGammaPass {
             g += shepard_gamma_segment(xs, load<D>(seg.a, s), load<D>(seg.b, s), load<D>(seg.n_in, s), R);
         }
     }
+    if constexpr (D == 2) g = shepard_gamma_from_sum(g);
+    else g = 1.0;
     gamma(i) = g < 1e-3 ? 1e-3 : (g > 1.0 ? 1.0 : g);
   }
   void run(int n) const {

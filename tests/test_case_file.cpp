@@ -94,6 +94,15 @@ TEST_CASE("Bad case files get a message naming file, line and key", "[unit][case
     const auto m = error_of(replace(good, "  duration: 0.5\n", ""));
     CHECK_THAT(m, Contains("cases/box.yaml:") && Contains("time.duration") && Contains("missing"));
   }
+  SECTION("wall clearance outside (0, 0.5] dx") {
+    for (const char* v : {"0", "-0.1", "0.6", "near"}) {
+      const auto m = error_of(replace(good, "    velocity: [0.5, 0.0]", std::string("    velocity: [0.5, 0.0]\n    wall_clearance: ") + v));
+      INFO(v);
+      CHECK_THAT(m, Contains("cases/box.yaml:") && Contains("fluid_blocks[0].wall_clearance") && Contains("dx"));
+    }
+    CHECK_THAT(error_of(replace(good, "    velocity: [0.5, 0.0]", "    velocity: [0.5, 0.0]\n    wall_clearance: 0.6")), Contains("(0, 0.5]"));
+    CHECK(error_of(replace(good, "    velocity: [0.5, 0.0]", "    velocity: [0.5, 0.0]\n    wall_clearance: 0.01")).empty());
+  }
   SECTION("negative spacing") {
     const auto m = error_of(replace(good, "dx: 0.02", "dx: -0.02"));
     CHECK_THAT(m, Contains("cases/box.yaml:13:") && Contains("discretisation.dx") && Contains("positive"));

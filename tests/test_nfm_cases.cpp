@@ -33,6 +33,18 @@ TEST_CASE("The fill leaves no particle inside a wall or closer than dx/2 to one"
   CHECK(body.size() == 2000 - 75);
 }
 
+TEST_CASE("fluid_blocks[i].wall_clearance keeps lattice points 0.01 dx from the walls and in the corners", "[nfm][fill]") {
+  const Scene scene = load_case(src + "/cases/near_wall_start_2d.yaml");
+  Simulation<2> sim(scene);
+  const double dx = scene.dx;
+  // 20 x 10 lattice points, none dropped; the default clearance dx/2 drops the first row and both side columns
+  CHECK(sim.size() == 200);
+  CHECK(Simulation<2>(load_case(src + "/cases/near_wall_start_2d.yaml", {"fluid_blocks.0.wall_clearance=0.5"})).size() == 18 * 9);
+  // closer than 0.02 dx to a wall: the bottom row (20), the side columns (2 x 10), the two corner points counted twice
+  CHECK(sim.wall_leaks(0.02 * dx) == 20 + 2 * 10 - 2);
+  CHECK(sim.wall_leaks(0.0099 * dx) == 0);
+}
+
 TEST_CASE("Free-surface detection flags the top row of a still tank and nothing along the walls", "[nfm][free_surface]") {
   Simulation<2> sim(load_case(src + "/cases/hydrostatic_tank_2d.yaml"));
   sim.update_free_surface();

@@ -107,6 +107,36 @@ TEST_CASE("Shepard factor in interior and exterior 90 degree corners", "[unit][n
   }
 }
 
+TEST_CASE("Shepard factor on the solid side of a wall (a particle that crossed it)", "[unit][nfm]") {
+  // gamma = integral of W over the fluid; the boundary sum counts the inner sphere of (4.49) only
+  // for points in the fluid, so behind a wall gamma = sum of gamma_s (shepard_gamma_from_sum)
+  auto gamma_any = [](const std::vector<Seg>& segs, const Vec<2>& x, double R) {
+    double s = 0;
+    for (const Seg& g : segs) s += shepard_gamma_segment(x, g.a, g.b, g.n_in, R);
+    return shepard_gamma_from_sum(s);
+  };
+  const double R = 0.7;
+  const auto wall = floor_segments(7);
+  // just behind the wall: just under 1/2 (continuous across the wall), decreasing with depth
+  CHECK(gamma_any(wall, v2(0.123, -1e-9), 1.0) == Approx(0.5).margin(1e-7));
+  CHECK(gamma_any(wall, v2(0.123, -0.1), 1.0) == Approx(1.0 - 0.644995).margin(1e-6));
+  for (const Vec<2>& p : {v2(0.11, -0.05), v2(0.3, -0.3), v2(-0.2, -0.6)})
+    CHECK(gamma_any(wall, p, R) == Approx(brute_force(p, R, [](double, double y) { return y > 0; })).margin(1e-6));
+  // the fluid side is unchanged, including near distance R where 1 + sum rounds about 1
+  CHECK(gamma_any(wall, v2(0.123, 0.3), 1.0) == Approx(0.867849).margin(1e-6));
+  CHECK(gamma_any(wall, v2(0.123, 1.0 - 1e-12), 1.0) == Approx(1.0).margin(1e-12));
+  // interior corner (fluid in x > 0, y > 0), points that crossed the side wall or the corner
+  const std::vector<Seg> inner = {{v2(4, 0), v2(0, 0), v2(0, 1)}, {v2(0, 0), v2(0, 4), v2(1, 0)}};
+  auto in_inner = [](double x, double y) { return x > 0 && y > 0; };
+  for (const Vec<2>& p : {v2(-0.02, 0.3), v2(-0.05, 0.01), v2(-0.01, -0.02)})
+    CHECK(gamma_any(inner, p, R) == Approx(brute_force(p, R, in_inner)).margin(1e-6));
+  // exterior corner (solid quadrant x < 0, y < 0): points inside the solid
+  const std::vector<Seg> outer = {{v2(-4, 0), v2(0, 0), v2(0, 1)}, {v2(0, 0), v2(0, -4), v2(1, 0)}};
+  auto in_outer = [](double x, double y) { return x > 0 || y > 0; };
+  for (const Vec<2>& p : {v2(-0.05, -0.02), v2(-0.3, -0.1)})
+    CHECK(gamma_any(outer, p, R) == Approx(brute_force(p, R, in_outer)).margin(1e-6));
+}
+
 TEST_CASE("Numerical Shepard (4.51) with many points converges to the analytical value", "[unit][nfm]") {
   // gamma = 1 - sum_j s_j f(|x_i - x_j|/R) (x_i - x_j).n_out with f = (7/pi) g_2 / R^2 (nfm.md §4-5)
   auto g2 = [](double r) { return 0.5 - 2.5 * r * r + 4 * r * r * r - 2.5 * std::pow(r, 4) + 4.0 / 7 * std::pow(r, 5) - 1 / (14 * r * r); };

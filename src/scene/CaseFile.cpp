@@ -333,7 +333,7 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
   for (std::size_t i = 0; i < blocks.size(); ++i) {
     const std::string key = "fluid_blocks[" + std::to_string(i) + "]";
     const YAML::Node b = blocks[i];
-    r.only_keys(b, key, {"min", "max", "velocity", "pressure"});
+    r.only_keys(b, key, {"min", "max", "velocity", "pressure", "wall_clearance"});
     FluidBlock fb;
     fb.box.min = r.vector(r.required(b, key, "min"), key + ".min", D, " (m)");
     fb.box.max = r.vector(r.required(b, key, "max"), key + ".max", D, " (m)");
@@ -365,6 +365,12 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
                          : w == "taylor_green" ? InitialPressure::TaylorGreen : InitialPressure::Zero;
       if (fb.pressure_kind == InitialPressure::TaylorGreen && fb.velocity_kind != InitialVelocity::TaylorGreen)
         r.fail(p, key + ".pressure", "taylor_green pressure needs a taylor_green velocity");
+    }
+    if (const YAML::Node c = b["wall_clearance"]) {
+      fb.wall_clearance = r.positive(c, key + ".wall_clearance", " (in units of dx)");
+      if (fb.wall_clearance > 0.5)
+        r.fail(c, key + ".wall_clearance",
+               "expected a clearance in (0, 0.5] (in units of dx): the default 0.5 already keeps every lattice point at dx/2 or more");
     }
     for (std::size_t o = 0; o < s.blocks.size(); ++o) {
       bool overlap = true;

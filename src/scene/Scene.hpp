@@ -28,6 +28,7 @@ struct FluidBlock {
   double tg_amplitude = 0.0;    // Taylor-Green U, m/s
   double tg_wavelength = 0.0;   // Taylor-Green L, m
   InitialPressure pressure_kind = InitialPressure::Zero;
+  double wall_clearance = 0.5;  // in dx: lattice points closer than this to a wall are dropped
 };
 
 // A wall of the Normal Flux Method: a polyline (2D) of segments. The stored

@@ -189,14 +189,32 @@ void Simulation<D>::fill(std::int64_t first, std::int64_t end) {
   }
 }
 
-// Drops lattice points outside the fluid region or closer than dx/2 to a wall,
-// keeping the order, and renumbers the global ids.
+// Drops lattice points outside the fluid region or closer to a wall than their
+// block's wall_clearance (dx/2 by default), keeping the order, and renumbers the global ids.
 template <int D>
 void Simulation<D>::remove_outside_fluid() {
   const int n = static_cast<int>(p_.size());
   Kokkos::View<int*, MemSpace> keep("ondine::Fill::keep", n), index("ondine::Fill::index", n);
+  const int nb = static_cast<int>(scene_.blocks.size());
+  Kokkos::View<std::int64_t*, MemSpace> block_end("ondine::Fill::block_end", nb);
+  Kokkos::View<double*, MemSpace> block_clearance("ondine::Fill::block_clearance", nb);
+  {
+    auto he = Kokkos::create_mirror_view(block_end);
+    auto hc = Kokkos::create_mirror_view(block_clearance);
+    std::int64_t end = 0;
+    for (int b = 0; b < nb; ++b) {
+      const FluidBlock& blk = scene_.blocks[b];
+      std::int64_t cnt = 1;
+      for (int k = 0; k < D; ++k) cnt *= std::llround((blk.box.max[k] - blk.box.min[k]) / scene_.dx);
+      he(b) = end += cnt;  // the lattice order of fill()
+      hc(b) = blk.wall_clearance * scene_.dx * (1 - 1e-9);  // a point exactly at the clearance is kept
+    }
+    Kokkos::deep_copy(block_end, he);
+    Kokkos::deep_copy(block_clearance, hc);
+  }
   Kokkos::parallel_for("ondine::Fill::fluid_region", Kokkos::RangePolicy<ExecSpace>(0, n),
-                       FluidRegionFilter<D>{region_, 0.5 * scene_.dx * (1 - 1e-9), p_.get(field::Position{}), keep});
+                       FluidRegionFilter<D>{region_, block_end, block_clearance, p_.get(field::Position{}),
+                                            p_.get(field::GlobalId{}), keep});
   int kept = 0;
   Kokkos::parallel_scan("ondine::Fill::scan", Kokkos::RangePolicy<ExecSpace>(0, n), KeepScan{keep, index}, kept);
   if (comm_.sum(static_cast<std::int64_t>(kept)) == 0)
