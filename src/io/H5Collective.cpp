@@ -33,6 +33,25 @@ hid_t transfer_list(const Communicator& comm) {
   return dxpl;
 }
 
+// Rows [first, first + count) of a (rows x components) file dataspace, selected
+// in place, and the memory dataspace that matches them (an empty selection on a
+// rank with no rows: collective calls still need every rank).
+struct RowSelection {
+  hid_t mem;
+  RowSelection(hid_t space, std::int64_t first, std::int64_t count, int components) {
+    const hsize_t start[2] = {static_cast<hsize_t>(first), 0}, cnt[2] = {static_cast<hsize_t>(count), static_cast<hsize_t>(components)};
+    check(H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, cnt, nullptr), "selecting rows");
+    mem = H5Screate_simple(components == 1 ? 1 : 2, cnt, nullptr);
+    if (count == 0) {
+      H5Sselect_none(mem);
+      H5Sselect_none(space);
+    }
+  }
+  ~RowSelection() { H5Sclose(mem); }
+  RowSelection(const RowSelection&) = delete;
+  RowSelection& operator=(const RowSelection&) = delete;
+};
+
 void write_attr(hid_t file, const char* name, hid_t type, const void* value) {
   const hid_t space = H5Screate(H5S_SCALAR);
   const hid_t attr = H5Acreate2(file, name, type, space, H5P_DEFAULT, H5P_DEFAULT);
@@ -77,14 +96,13 @@ void H5CollectiveFile::dataset(const std::string& name, const std::vector<double
   const hid_t space = H5Screate_simple(rank, dims, nullptr);
   const hid_t set = H5Dcreate2(file_, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   if (set < 0) throw std::runtime_error("HDF5: cannot create dataset " + name);
-  const hsize_t start[2] = {static_cast<hsize_t>(offset_), 0}, count[2] = {static_cast<hsize_t>(local_), static_cast<hsize_t>(components)};
-  check(H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, count, nullptr), "selecting rows of " + name);
-  const hid_t mem = H5Screate_simple(rank, count, nullptr);
-  if (local_ == 0) H5Sselect_none(mem), H5Sselect_none(space);
-  const hid_t dxpl = transfer_list(comm_);
-  const herr_t st = H5Dwrite(set, H5T_NATIVE_DOUBLE, mem, space, dxpl, rows.empty() ? nullptr : rows.data());
-  H5Pclose(dxpl);
-  H5Sclose(mem);
+  herr_t st;
+  {
+    const RowSelection sel(space, offset_, local_, components);
+    const hid_t dxpl = transfer_list(comm_);
+    st = H5Dwrite(set, H5T_NATIVE_DOUBLE, sel.mem, space, dxpl, rows.empty() ? nullptr : rows.data());
+    H5Pclose(dxpl);
+  }
   H5Dclose(set);
   H5Sclose(space);
   check(st, "writing dataset " + name);
@@ -167,16 +185,14 @@ std::vector<double> H5CollectiveReader::rows(const std::string& name, std::int64
   if (first < 0 || first + count > total) throw std::runtime_error(path_ + ": dataset '" + name + "' has fewer rows than expected");
   const hid_t set = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
   const hid_t space = H5Dget_space(set);
-  const int rank = comps == 1 ? 1 : 2;
-  const hsize_t start[2] = {static_cast<hsize_t>(first), 0}, cnt[2] = {static_cast<hsize_t>(count), static_cast<hsize_t>(comps)};
-  H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, cnt, nullptr);
-  const hid_t mem = H5Screate_simple(rank, cnt, nullptr);
-  if (count == 0) H5Sselect_none(mem), H5Sselect_none(space);
   std::vector<double> out(static_cast<std::size_t>(count) * comps);
-  const hid_t dxpl = transfer_list(comm_);
-  const herr_t st = H5Dread(set, H5T_NATIVE_DOUBLE, mem, space, dxpl, out.empty() ? nullptr : out.data());
-  H5Pclose(dxpl);
-  H5Sclose(mem);
+  herr_t st;
+  {
+    const RowSelection sel(space, first, count, comps);
+    const hid_t dxpl = transfer_list(comm_);
+    st = H5Dread(set, H5T_NATIVE_DOUBLE, sel.mem, space, dxpl, out.empty() ? nullptr : out.data());
+    H5Pclose(dxpl);
+  }
   H5Sclose(space);
   H5Dclose(set);
   if (st < 0) throw std::runtime_error(path_ + ": dataset '" + name + "' cannot be read (truncated or corrupted file)");
