@@ -7,35 +7,42 @@
 
 namespace ondine {
 
-// One stage: y = y0 + c_dt k with k the current derivatives (du/dt, drho/dt, and
-// u for dx/dt), and, when accumulate is set, the RK4 weighted sum acc += w k
-// (acc = w k on the first stage).
+// The fields an explicit Runge-Kutta update reads and writes: the state y, its
+// derivatives k (du/dt, drho/dt, and u for dx/dt), the state y0 at the start of
+// the step and the RK4 weighted sums (unused by the midpoint scheme).
 template <int D>
-struct RungeKuttaStage {
-  PeriodicBox<D> box;
+struct RungeKuttaViews {
   field_view_t<field::Position, D> x;
   field_view_t<field::Velocity, D> u;
   field_view_t<field::Density, D> rho;
   field_view_t<field::Acceleration, D> du;
   field_view_t<field::DensityRate, D> drho;
-  field_view_t<field::Position, D> x0, xa;  // y0 and the RK4 sums (unused unless accumulate)
+  field_view_t<field::Position, D> x0, xa;
   field_view_t<field::Velocity, D> u0, ua;
   field_view_t<field::Density, D> r0, ra;
+};
+
+// One stage: y = y0 + c_dt k, and, when accumulate is set, the RK4 weighted sum
+// acc += w k (acc = w k on the first stage).
+template <int D>
+struct RungeKuttaStage {
+  PeriodicBox<D> box;
+  RungeKuttaViews<D> v;
   double c_dt, w;
   bool accumulate, first;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     for (int k = 0; k < D; ++k) {
-      const double uk = u(i, k);
+      const double uk = v.u(i, k);
       if (accumulate) {
-        xa(i, k) = (first ? 0.0 : xa(i, k)) + w * uk;
-        ua(i, k) = (first ? 0.0 : ua(i, k)) + w * du(i, k);
+        v.xa(i, k) = (first ? 0.0 : v.xa(i, k)) + w * uk;
+        v.ua(i, k) = (first ? 0.0 : v.ua(i, k)) + w * v.du(i, k);
       }
-      x(i, k) = box.wrap(x0(i, k) + c_dt * uk, k);
-      u(i, k) = u0(i, k) + c_dt * du(i, k);
+      v.x(i, k) = box.wrap(v.x0(i, k) + c_dt * uk, k);
+      v.u(i, k) = v.u0(i, k) + c_dt * v.du(i, k);
     }
-    if (accumulate) ra(i) = (first ? 0.0 : ra(i)) + w * drho(i);
-    rho(i) = r0(i) + c_dt * drho(i);
+    if (accumulate) v.ra(i) = (first ? 0.0 : v.ra(i)) + w * v.drho(i);
+    v.rho(i) = v.r0(i) + c_dt * v.drho(i);
   }
 
   void run(int n) const { Kokkos::parallel_for("ondine::Integrator::stage", Kokkos::RangePolicy<ExecSpace>(0, n), *this); }
@@ -45,23 +52,16 @@ struct RungeKuttaStage {
 template <int D>
 struct RungeKutta4Final {
   PeriodicBox<D> box;
-  field_view_t<field::Position, D> x;
-  field_view_t<field::Velocity, D> u;
-  field_view_t<field::Density, D> rho;
-  field_view_t<field::Acceleration, D> du;
-  field_view_t<field::DensityRate, D> drho;
-  field_view_t<field::Position, D> x0, xa;
-  field_view_t<field::Velocity, D> u0, ua;
-  field_view_t<field::Density, D> r0, ra;
+  RungeKuttaViews<D> v;
   double dt;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     for (int k = 0; k < D; ++k) {
-      const double uk = u(i, k);
-      x(i, k) = box.wrap(x0(i, k) + dt * (xa(i, k) + uk / 6.0), k);
-      u(i, k) = u0(i, k) + dt * (ua(i, k) + du(i, k) / 6.0);
+      const double uk = v.u(i, k);
+      v.x(i, k) = box.wrap(v.x0(i, k) + dt * (v.xa(i, k) + uk / 6.0), k);
+      v.u(i, k) = v.u0(i, k) + dt * (v.ua(i, k) + v.du(i, k) / 6.0);
     }
-    rho(i) = r0(i) + dt * (ra(i) + drho(i) / 6.0);
+    v.rho(i) = v.r0(i) + dt * (v.ra(i) + v.drho(i) / 6.0);
   }
 
   void run(int n) const {

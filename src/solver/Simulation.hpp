@@ -14,6 +14,7 @@
 
 #include "kernels/CellList.hpp"
 #include "kernels/FluxArgs.hpp"
+#include "kernels/Integrator.hpp"
 #include "kernels/NeighbourList.hpp"
 #include "kernels/OrbLookup.hpp"
 #include "io/Checkpoint.hpp"
@@ -129,6 +130,7 @@ class Simulation {
   void reorder_by_cell();
   double time_step() const;
   void stage_update(double c_dt, double acc_weight, bool first);
+  RungeKuttaViews<D> stage_views() const;
   void check_state(double dt);
 
   Scene scene_;

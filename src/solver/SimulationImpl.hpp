@@ -495,28 +495,28 @@ double Simulation<D>::time_step() const {
   return dt;
 }
 
+// The state, its derivatives and the integrator's stage storage (RK4 sums only with RK4).
+template <int D>
+RungeKuttaViews<D> Simulation<D>::stage_views() const {
+  const bool rk4 = scene_.integrator == TimeIntegrator::RK4;
+  return {p_.get(field::Position{}),
+          p_.get(field::Velocity{}),
+          p_.get(field::Density{}),
+          p_.get(field::Acceleration{}),
+          p_.get(field::DensityRate{}),
+          p_.get(field::StagePosition{}),
+          rk4 ? p_.get(field::StagePositionSum{}) : field_view_t<field::Position, D>(),
+          p_.get(field::StageVelocity{}),
+          rk4 ? p_.get(field::StageVelocitySum{}) : field_view_t<field::Velocity, D>(),
+          p_.get(field::StageDensity{}),
+          rk4 ? p_.get(field::StageDensitySum{}) : field_view_t<field::Density, D>()};
+}
+
 // One stage of an explicit Runge-Kutta step: y = y0 + c_dt k with k the current
 // derivatives, and the weighted sum acc += w k used by the final RK4 update.
 template <int D>
 void Simulation<D>::stage_update(double c_dt, double w, bool first) {
-  const bool rk4 = scene_.integrator == TimeIntegrator::RK4;
-  RungeKuttaStage<D>{local_box_,
-                     p_.get(field::Position{}),
-                     p_.get(field::Velocity{}),
-                     p_.get(field::Density{}),
-                     p_.get(field::Acceleration{}),
-                     p_.get(field::DensityRate{}),
-                     p_.get(field::StagePosition{}),
-                     rk4 ? p_.get(field::StagePositionSum{}) : field_view_t<field::Position, D>(),
-                     p_.get(field::StageVelocity{}),
-                     rk4 ? p_.get(field::StageVelocitySum{}) : field_view_t<field::Velocity, D>(),
-                     p_.get(field::StageDensity{}),
-                     rk4 ? p_.get(field::StageDensitySum{}) : field_view_t<field::Density, D>(),
-                     c_dt,
-                     w,
-                     w != 0.0,
-                     first}
-      .run(n_own_);
+  RungeKuttaStage<D>{local_box_, stage_views(), c_dt, w, w != 0.0, first}.run(n_own_);
   halos_fresh_ = false;
 }
 
@@ -554,20 +554,7 @@ double Simulation<D>::step(double t_stop) {
     stage_time_ = t_ + dt;
     evaluate();
     // final: y = y0 + dt (acc + k4/6)
-    RungeKutta4Final<D>{local_box_,
-                        p_.get(field::Position{}),
-                        p_.get(field::Velocity{}),
-                        p_.get(field::Density{}),
-                        p_.get(field::Acceleration{}),
-                        p_.get(field::DensityRate{}),
-                        p_.get(field::StagePosition{}),
-                        p_.get(field::StagePositionSum{}),
-                        p_.get(field::StageVelocity{}),
-                        p_.get(field::StageVelocitySum{}),
-                        p_.get(field::StageDensity{}),
-                        p_.get(field::StageDensitySum{}),
-                        dt}
-        .run(n_own_);
+    RungeKutta4Final<D>{local_box_, stage_views(), dt}.run(n_own_);
     halos_fresh_ = false;
   } else {
     // explicit midpoint: y_1/2 = y0 + dt/2 k1, y1 = y0 + dt k(y_1/2)
