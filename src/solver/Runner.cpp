@@ -301,6 +301,7 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
                  {"eos", to_string(scene.eos)},
                  {"viscous_term", to_string(scene.viscous_term)},
                  {"nu", scene.nu},
+                 {"morris_lattice_factor", sim.morris_factor()},
                  {"delta_sph", scene.delta_sph},
                  {"artificial_viscosity", scene.artificial_viscosity},
                  {"background_pressure", scene.background_pressure},

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "kernels/CellList.hpp"
+#include "kernels/DensityGradientPass.hpp"
 #include "kernels/FluxArgs.hpp"
 #include "kernels/Integrator.hpp"
 #include "kernels/NeighbourList.hpp"
@@ -93,6 +94,8 @@ class Simulation {
   std::uint64_t state_checksum() const;
   std::int64_t pair_count() const;            // pairs within R (both ways) at the last list build
   std::int64_t neighbour_builds() const { return builds_; }
+  // lattice quadrature factor of the Morris Laplacian (kernels/MorrisLatticeFactor.hpp); 1 without it
+  double morris_factor() const { return morris_factor_; }
 
   Diagnostics diagnostics() const;
   const Diagnostics& initial_diagnostics() const { return initial_; }
@@ -138,6 +141,7 @@ class Simulation {
   ParticleSet<D> p_;
   PeriodicBox<D> box_;
   double R_, cutoff_;
+  double morris_factor_ = 1.0;  // kappa of kernels/MorrisLatticeFactor.hpp (Morris viscosity only)
   CellList<D> cells_;
   NeighbourList<D> list_;
   field_view_t<field::Position, D> x_at_build_;
@@ -155,10 +159,12 @@ class Simulation {
   int rebalances_ = 0;
   FluxFunction<D> flux_ = nullptr;
   WallModel<D> walls_;
+  WallGradients<D> wall_grads_;  // scratch of evaluate(): velocity gradient, Laplacian of x
   FluidRegion<D> region_;
   double stage_time_ = 0;
   double t_ = 0;
   std::int64_t steps_ = 0, builds_ = 0;
+  std::int64_t wall_corrections_ = 0;  // this rank's impermeability corrections (kernels/WallImpermeability.hpp)
   bool list_valid_ = false;
   Diagnostics initial_;
 };

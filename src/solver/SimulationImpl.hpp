@@ -6,6 +6,8 @@
 #include <stdexcept>
 
 #include "kernels/DensityGradientPass.hpp"
+#include "kernels/MorrisLatticeFactor.hpp"
+#include "kernels/WallImpermeability.hpp"
 #include "kernels/EquationOfState.hpp"
 #include "kernels/FreeSurfacePass.hpp"
 #include "kernels/WallFluxPass.hpp"
@@ -42,6 +44,8 @@ template <int D>
 Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : scene_(scene) {
   if (scene.dimension != D) throw std::logic_error("Simulation<D>: scene dimension mismatch");
   R_ = scene.R();
+  if (scene.viscous_term == ViscousTerm::Morris)
+    morris_factor_ = with_kernel<D>(scene.kernel, R_, [&](auto W) { return morris_lattice_factor<D>(W, R_, scene.dx); });
   cutoff_ = R_ + scene.neighbour_skin * scene.dx;
   for (int k = 0; k < D; ++k) {
     box_.lo[k] = scene.domain.min[k];
@@ -417,7 +421,7 @@ void Simulation<D>::evaluate() {
   a.m = p_.get(field::Mass{});
   a.du = p_.get(field::Acceleration{});
   a.drho = p_.get(field::DensityRate{});
-  a.nu = scene_.nu;
+  a.nu = scene_.viscous_term == ViscousTerm::Morris ? scene_.nu * morris_factor_ : scene_.nu;
   a.delta_coeff = scene_.delta_sph * scene_.c0 * R_;
   a.av_alpha_R_c0 = scene_.artificial_viscosity * R_ * scene_.c0;
   detail::with_eos<D>(scene_, [&](auto eos) { update_pressure<D>(eos, a.rho, a.P, n_all); });
@@ -436,27 +440,60 @@ void Simulation<D>::evaluate() {
     update_walls(stage_time_);
     ShepardGammaPass<D>{walls_.segments(), R_, box_, a.x, p_.get(field::ShepardGamma{})}.run(n_all);
   }
+  const bool morris_walls = walls && scene_.viscous_term == ViscousTerm::Morris;
+  if (morris_walls && static_cast<int>(wall_grads_.grad_u.extent(0)) < n) {
+    // scratch of this evaluation (kernels/DensityGradientPass.hpp), grown with some slack
+    const int cap = n + n / 8 + 16;
+    wall_grads_.grad_u = decltype(wall_grads_.grad_u)("ondine::NFM::velocity_gradient", cap);
+    wall_grads_.lap_x = decltype(wall_grads_.lap_x)("ondine::NFM::laplacian_of_x", cap);
+  }
   if (scene_.delta_sph > 0 || walls) {
     a.grad_rho = p_.get(field::DensityGradient{});
     with_kernel<D>(scene_.kernel, R_, [&](auto W) {
-      DensityGradientPass<D, decltype(W)>{list_, box_, W, R_ * R_, a.x, a.rho, a.m, a.grad_rho}.run(n);
+      using K = decltype(W);
+      if (morris_walls)
+        DensityGradientPass<D, K, true, true>{list_, box_, W, R_ * R_, a.x, a.rho, a.m, a.grad_rho, a.u, wall_grads_}.run(n);
+      else
+        DensityGradientPass<D, K>{list_, box_, W, R_ * R_, a.x, a.rho, a.m, a.grad_rho}.run(n);
     });
     if (!comm_.serial()) exchange_.refresh(p_, comm_, field::DensityGradient{});
   }
   flux_(a);
   if (walls) {
     const double eos_gamma = scene_.eos == EosLaw::Tait ? scene_.tait_gamma : 1.0;
+    const WallEos eos{scene_.rho0, scene_.c0, eos_gamma};
+    const auto gamma = p_.get(field::ShepardGamma{});
     with_kernel<D>(scene_.kernel, R_, [&](auto W) {
-      if (scene_.viscous_term != ViscousTerm::None)
-        WallFluxPass<D, decltype(W), true>{walls_.points(), walls_.cells(), W, R_ * R_, a.body, scene_.nu,
-                                           WallEos{scene_.rho0, scene_.c0, eos_gamma}, 0.05 * R_, box_, a.P_min, a.x, a.u, a.rho, a.P,
-                                           a.grad_rho, p_.get(field::ShepardGamma{}), a.du, a.drho}
-            .run(n);
+      using K = decltype(W);
+      const auto run = [&](auto pass) {
+        pass.wall = walls_.points();
+        pass.wall_cells = walls_.cells();
+        pass.W = W;
+        pass.R2 = R_ * R_;
+        pass.body = a.body;
+        pass.nu = scene_.nu;
+        pass.morris_factor = morris_factor_;
+        pass.eos = eos;
+        pass.min_dn = 0.05 * R_;
+        pass.box = box_;
+        pass.P_min = a.P_min;
+        pass.x = a.x;
+        pass.u = a.u;
+        pass.rho = a.rho;
+        pass.P = a.P;
+        pass.grad_rho = a.grad_rho;
+        pass.gamma = gamma;
+        pass.du = a.du;
+        pass.drho = a.drho;
+        pass.grads = wall_grads_;
+        pass.run(n);
+      };
+      if (morris_walls)
+        run(WallFluxPass<D, K, true, true>{});
+      else if (scene_.viscous_term != ViscousTerm::None)
+        run(WallFluxPass<D, K, true, false>{});
       else
-        WallFluxPass<D, decltype(W), false>{walls_.points(), walls_.cells(), W, R_ * R_, a.body, scene_.nu,
-                                            WallEos{scene_.rho0, scene_.c0, eos_gamma}, 0.05 * R_, box_, a.P_min, a.x, a.u, a.rho, a.P,
-                                            a.grad_rho, p_.get(field::ShepardGamma{}), a.du, a.drho}
-            .run(n);
+        run(WallFluxPass<D, K, false, false>{});
     });
   }
 }
@@ -590,6 +627,15 @@ double Simulation<D>::step(double t_stop) {
     Kokkos::deep_copy(p_.get(field::Velocity{}), u0_);
     Kokkos::deep_copy(p_.get(field::Density{}), rho0_);
     halos_fresh_ = false;
+  }
+  if (!walls_.empty()) {
+    // kernels/WallImpermeability.hpp: particles found behind a wall at the end of the step
+    update_walls(t_ + dt);
+    const long c = WallImpermeability<D>{walls_.segments(), walls_.wall_velocity(), dt, box_, p_.get(field::StagePosition{}),
+                                         p_.get(field::Position{}), p_.get(field::Velocity{})}
+                       .run(n_own_);
+    if (c > 0) halos_fresh_ = false;
+    wall_corrections_ += c;
   }
   check_state(dt);
   if (t_ < scene_.damping_time) {
@@ -936,7 +982,10 @@ std::map<std::string, double> Simulation<D>::errors() const {
     e["velocity_linf"] = comm_.max(linf) / amp;
     e["max_speed_decay_error"] = std::abs(d.max_speed - amp) / amp;
   }
-  if (!walls_.empty()) e["wall_leaks"] = static_cast<double>(wall_leaks());
+  if (!walls_.empty()) {
+    e["wall_leaks"] = static_cast<double>(wall_leaks());
+    e["wall_corrections"] = static_cast<double>(comm_.sum(wall_corrections_));
+  }
   const Reference& ref = scene_.reference;
   const int n = n_own_;
   if (ref.kind == ReferenceKind::Poiseuille) {

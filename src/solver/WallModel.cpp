@@ -108,6 +108,7 @@ WallModel<D>::WallModel(const Scene& scene, const PeriodicBox<D>& box, double cu
   points_.wall = to_device(qwall, "ondine::NFM::point_wall");
   points_.no_slip = to_device(qslip, "ondine::NFM::point_no_slip");
   points_.count = static_cast<int>(qs.size());
+  wall_velocity_ = decltype(wall_velocity_)("ondine::NFM::wall_velocity", walls_.size());
   if (moving_) {
     seg_a0_ = decltype(seg_a0_)("ondine::NFM::segment_a0", segments_.count);
     seg_b0_ = decltype(seg_b0_)("ondine::NFM::segment_b0", segments_.count);
@@ -138,6 +139,7 @@ void WallModel<D>::move_to(double t) {
     }
     Kokkos::deep_copy(disp, hd);
     Kokkos::deep_copy(vel, hv);
+    Kokkos::deep_copy(wall_velocity_, vel);
     const auto px = points_.x, pu = points_.u, x0 = x0_;
     const auto pw = points_.wall;
     Kokkos::parallel_for("ondine::NFM::move_points", Kokkos::RangePolicy<ExecSpace>(0, points_.count), KOKKOS_LAMBDA(const int q) {

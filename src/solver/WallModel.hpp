@@ -25,6 +25,8 @@ class WallModel {
   const WallSegments<D>& segments() const { return segments_; }
   const WallPoints<D>& points() const { return points_; }
   const CellList<D>& cells() const { return cells_; }
+  // rigid velocity of each wall at the last move_to (zero for fixed walls)
+  const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& wall_velocity() const { return wall_velocity_; }
   // Wall positions and velocities at time t (rigid motion of each wall).
   void move_to(double t);
   bool moving() const { return moving_; }
@@ -34,7 +36,7 @@ class WallModel {
   std::vector<std::string> names_;
   WallSegments<D> segments_;
   WallPoints<D> points_;
-  Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> seg_a0_, seg_b0_, x0_;
+  Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> seg_a0_, seg_b0_, x0_, wall_velocity_;
   CellList<D> cells_;
   PeriodicBox<D> box_;
   double cutoff_ = 0;

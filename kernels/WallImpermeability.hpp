@@ -1,0 +1,93 @@
+#pragma once
+// Impermeability guard of the NFM walls (not in the thesis). The wall terms of
+// (4.20)-(4.25) keep particles out of a wall only through the wall pressure
+// P_p = P_f + rho c (u - u_w).n (4.14): a particle of a thin film or jet at about
+// zero pressure that drifts onto a wall feels no restoring force, and one pushed
+// hard enough (an impact, a start 0.01 dx from a corner) goes through the wall and
+// is lost behind it or blows up (docs/validation.md, stability suite).
+// After each time step, the path of each particle over the step, from x0 (the
+// start of the step, moved with the wall: x0 + u_w dt) to x1, is tested against
+// every wall segment; where it crosses one from the fluid side (the earliest
+// crossing, corners included), x1 is mirrored back across that segment's line,
+// x1 <- x1 - 2 d1 n_in, and the velocity relative to the wall loses its component
+// into the wall (an inelastic collision: no energy is added). Two sweeps, for the
+// second wall of a corner. Mass is untouched; the momentum removed is the wall's
+// reaction. Each corrected particle is counted (summary.json errors
+// `wall_corrections`), so a run says how often the guard acted; the leak
+// diagnostics (wall_leaks, outside_domain) still count particles that end close
+// to a wall. Every segment is visited, as in ShepardGammaPass.
+#include "kernels/WallSet.hpp"
+
+namespace ondine {
+
+template <int D>
+struct WallImpermeability {
+  WallSegments<D> seg;
+  Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> wall_velocity;  // per wall
+  double dt;
+  PeriodicBox<D> box;
+  field_view_t<field::Position, D> x0;  // the start of the step (stage storage)
+  field_view_t<field::Position, D> x;
+  field_view_t<field::Velocity, D> u;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, long& corrected) const {
+    if constexpr (D == 2) {
+      const Vec<D> x1_stored = load<D>(x, i);
+      Vec<D> from = load<D>(x0, i);
+      Vec<D> to = from + box.delta(x1_stored, from);  // unwrapped end of the path
+      Vec<D> ui = load<D>(u, i);
+      bool moved = false;
+      bool first_sweep = true;
+      for (int sweep = 0; sweep < 2; ++sweep) {
+        int hit = -1;
+        double tau_hit = 2.0, d_end = 0.0;
+        Vec<D> image = Vec<D>::zero();
+        const int sx = box.periodic[0] ? 1 : 0, sy = box.periodic[1] ? 1 : 0;
+        for (int ox = -sx; ox <= sx; ++ox)
+          for (int oy = -sy; oy <= sy; ++oy) {
+            Vec<D> off;
+            off[0] = ox * box.len[0];
+            off[1] = oy * box.len[1];
+            for (int s = 0; s < seg.count; ++s) {
+              const Vec<D> n = load<D>(seg.n_in, s);
+              const Vec<D> a = load<D>(seg.a, s) - off, ab = load<D>(seg.b, s) - load<D>(seg.a, s);
+              // the start moves with the wall over the step (first sweep; then it is on the wall)
+              const Vec<D> p0 = first_sweep ? from + dt * load<D>(wall_velocity, seg.wall(s)) : from;
+              const double d0 = dot(p0 - a, n), d1 = dot(to - a, n);
+              if (!(d0 >= 0.0 && d1 < 0.0)) continue;
+              const double tau = d0 / (d0 - d1);
+              const Vec<D> pc = p0 + tau * (to - p0);
+              const double sigma = dot(pc - a, ab) / norm2(ab);
+              if (sigma < -1e-9 || sigma > 1.0 + 1e-9 || tau >= tau_hit) continue;
+              tau_hit = tau;
+              hit = s;
+              d_end = d1;
+              image = pc;
+            }
+          }
+        if (hit < 0) break;
+        const Vec<D> n = load<D>(seg.n_in, hit);
+        to += (-2.0 * d_end) * n;
+        const double vn = dot(ui - load<D>(wall_velocity, seg.wall(hit)), n);
+        if (vn < 0.0) ui += (-vn) * n;
+        from = image + (1e-12 * box.len[0]) * n;  // the crossing point, on the fluid side
+        first_sweep = false;
+        moved = true;
+      }
+      if (moved) {
+        // back in the same periodic image as the stored position
+        store<D>(x, i, x1_stored + (to - (load<D>(x0, i) + box.delta(x1_stored, load<D>(x0, i)))));
+        store<D>(u, i, ui);
+        ++corrected;
+      }
+    }
+  }
+
+  long run(int n) const {
+    long c = 0;
+    Kokkos::parallel_reduce("ondine::NFM::impermeability", Kokkos::RangePolicy<ExecSpace>(0, n), *this, c);
+    return c;
+  }
+};
+
+}  // namespace ondine
