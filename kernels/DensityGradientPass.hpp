@@ -4,28 +4,31 @@
 //   M_i = sum_j w_j (x_j - x_i) (x) grad_i W_ij,  <grad rho>_i = M_i^{-T} sum_j w_j (rho_j - rho_i) grad_i W_ij.
 // Where M_i is singular (an isolated particle) the gradient is left unrenormalised.
 // Exact for linear fields whatever the support (a wall or a free surface cuts it),
-// which is why the wall terms need no wall integral here.
+// which is why no wall integral is needed here.
 //
-// Scenes with walls also get, in the same neighbour loop (WallState), what the
-// wall pass needs near a wall (kernels/WallFluxPass.hpp):
-//  - the renormalised velocity gradient G_i (G_ab = du_a/dx_b), same M_i, for the
-//    MUSCL reconstruction of the momentum at the wall point (4.30, phi = rho u);
-//  - with Morris viscosity (LaplacianOfX), the fluid part of the Morris operator
-//    applied to the coordinates, Lx_i = sum_j w_j (rho_i + rho_j)/rho_i W'(r)/r x_ij,
-//    for the first-order consistency correction of the NFM Laplacian (4.85).
-// They are scratch arrays of the evaluation (wall_state below), not particle fields.
+// In viscous scenes with no-slip NFM walls (ConsistentLaplacian), the same neighbour
+// loop, and a loop over the no-slip wall points within R, also gather the moment
+// system of the consistent Laplacian's weights (kernels/ConsistentLaplacian.hpp) and
+// solve it per particle into a scratch array of the evaluation (not a particle field).
+#include "kernels/ConsistentLaplacian.hpp"
 #include "kernels/NeighbourLoops.hpp"
+#include "kernels/WallPressure.hpp"
+#include "kernels/WallSet.hpp"
 
 namespace ondine {
 
-// Per-particle scratch of one evaluation, read by the wall pass of the same evaluation.
+// What the consistent Laplacian's moment system needs, and where its weights go.
 template <int D>
-struct WallGradients {
-  Kokkos::View<double* [D][D], Kokkos::LayoutLeft, MemSpace> grad_u;  // G_i(a, b) = du_a/dx_b
-  Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> lap_x;      // fluid part of L_MEA(x)_i
+struct LaplacianWeights {
+  WallPoints<D> wall;
+  CellList<D> wall_cells;
+  double min_dn = 0;  // the |d_n| floor of the NFM wall term (4.85)
+  double kappa = 1;   // fallback A = kappa I (kernels/MorrisLatticeFactor.hpp)
+  field_view_t<field::ShepardGamma, D> gamma;
+  LaplacianWeightView<D> weights;  // (A_i, b_i) per particle
 };
 
-template <int D, class Kernel, bool WallState = false, bool LaplacianOfX = false>
+template <int D, class Kernel, bool ConsistentLaplacian = false>
 struct DensityGradientPass {
   NeighbourList<D> list;
   PeriodicBox<D> box;
@@ -35,20 +38,21 @@ struct DensityGradientPass {
   field_view_t<field::Density, D> rho;
   field_view_t<field::Mass, D> m;
   field_view_t<field::DensityGradient, D> grad_rho;
-  field_view_t<field::Velocity, D> u = {};  // WallState only
-  WallGradients<D> wall_state = {};
+  LaplacianWeights<D> lap = {};  // ConsistentLaplacian only
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<D> xi = load<D>(x, i);
     const double rho_i = rho(i);
     Mat<D> M = Mat<D>::zero();
     Vec<D> g = Vec<D>::zero();
-    Vec<D> gu[D];  // sum_j w_j (u_j,a - u_i,a) grad_i W_ij, one vector per component a
-    Vec<D> lx = Vec<D>::zero();
-    Vec<D> ui = Vec<D>::zero();
-    if constexpr (WallState) {
-      ui = load<D>(u, i);
-      for (int a = 0; a < D; ++a) gu[a] = Vec<D>::zero();
+    using Basis = LaplacianBasis<D>;
+    constexpr int K = Basis::K;
+    double moments[K][K];  // sum c psi psi^T / r^2 (kernels/ConsistentLaplacian.hpp)
+    double shepard = 0.0;
+    if constexpr (ConsistentLaplacian) {
+      for (int p = 0; p < K; ++p)
+        for (int q = 0; q < K; ++q) moments[p][q] = 0.0;
+      shepard = m(i) / rho_i * W.value(0.0);
     }
     for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>& xij, const double r) {
       const double rho_j = rho(j);
@@ -58,36 +62,36 @@ struct DensityGradientPass {
       for (int a = 0; a < D; ++a)
         for (int b = 0; b < D; ++b) M.a[a][b] -= w * xij[a] * gradW[b];  // (x_j - x_i) = -x_ij
       g += (w * (rho_j - rho_i)) * gradW;
-      if constexpr (WallState) {
-        const Vec<D> uji = load<D>(u, j) - ui;
-        for (int a = 0; a < D; ++a) gu[a] += (w * uji[a]) * gradW;
+      if constexpr (ConsistentLaplacian) {
+        Basis::accumulate(moments, w * (rho_i + rho_j) / rho_i * dWdr / r / (r * r), xij);
+        shepard += w * W.value(r);
       }
-      if constexpr (LaplacianOfX) lx += (w * (rho_i + rho_j) / rho_i * dWdr / r) * xij;
     });
     Mat<D> B;
-    const bool renormalised = invert(M, B, 1e-12);
-    store<D>(grad_rho, i, renormalised ? transpose_times(B, g) : g);
-    if constexpr (WallState) {
+    if (invert(M, B, 1e-12)) {
+      Vec<D> r;
       for (int a = 0; a < D; ++a) {
-        const Vec<D> row = renormalised ? transpose_times(B, gu[a]) : gu[a];
-        for (int b = 0; b < D; ++b) wall_state.grad_u(i, a, b) = row[b];
+        r[a] = 0.0;
+        for (int b = 0; b < D; ++b) r[a] += B.a[b][a] * g[b];  // B^T g
       }
+      g = r;
     }
-    if constexpr (LaplacianOfX) store<D>(wall_state.lap_x, i, lx);
-  }
-
-  // B^T v
-  KOKKOS_INLINE_FUNCTION static Vec<D> transpose_times(const Mat<D>& B, const Vec<D>& v) {
-    Vec<D> r;
-    for (int a = 0; a < D; ++a) {
-      r[a] = 0.0;
-      for (int b = 0; b < D; ++b) r[a] += B.a[b][a] * v[b];
+    store<D>(grad_rho, i, g);
+    if constexpr (ConsistentLaplacian) {
+      // the no-slip wall points (4.85): k_q = 2 s_q W / d_n, the wall velocity as f_q
+      for_each_point_within<D>(lap.wall_cells, box, lap.wall.x, xi, R2, [&](const int q, const Vec<D>& xiq, const double r) {
+        if (!lap.wall.no_slip(q)) return;
+        const double k = 2.0 * lap.wall.s(q) * W.value(r) / fluid_side_dn<D>(xiq, load<D>(lap.wall.n_out, q), lap.min_dn);
+        Basis::accumulate(moments, k / (r * r), xiq);
+      });
+      // a support cut by a free surface keeps the plain operator (see ConsistentLaplacian.hpp)
+      const double gamma_i = lap.gamma(i);
+      Basis::solve(moments, shepard >= 0.9 * gamma_i, lap.kappa, gamma_i, lap.weights, i);
     }
-    return r;
   }
 
   void run(int n) const {
-    Kokkos::parallel_for(WallState ? "ondine::DensityGradient+wall_state" : "ondine::DensityGradient",
+    Kokkos::parallel_for(ConsistentLaplacian ? "ondine::DensityGradient+consistent_laplacian" : "ondine::DensityGradient",
                          Kokkos::RangePolicy<ExecSpace>(0, n), *this);
   }
 };

@@ -1,6 +1,7 @@
 #pragma once
 // Everything a flux pass may read, whatever its terms; the selected term pack
 // takes what it needs (see src/solver/FluxDispatch.hpp).
+#include "kernels/ConsistentLaplacian.hpp"
 #include "kernels/NeighbourList.hpp"
 
 namespace ondine {
@@ -21,6 +22,7 @@ struct FluxArgs {
   field_view_t<field::DensityRate, D> drho;
   field_view_t<field::DensityGradient, D> grad_rho;  // delta-SPH only
   double nu = 0;             // viscous terms
+  LaplacianWeightView<D> laplacian_weights;  // consistent Morris only
   double delta_coeff = 0;    // delta c0 R
   double av_alpha_R_c0 = 0;  // artificial viscosity
   double P_min = 0;          // background pressure

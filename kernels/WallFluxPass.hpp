@@ -8,34 +8,27 @@
 // (plus 2 P_min inside the bracket with the background-pressure correction 2.105),
 // with the wall pressure P_p of the normal flux (4.14) and its MUSCL state of rho
 // (4.30)-(4.32, kernels/WallPressure.hpp).
-// With Morris viscosity (MorrisCorrection), a particle whose support meets a no-slip
-// wall also gets the first-order consistency correction of the NFM Laplacian:
-//   du_i += -nu G_i . (kappa Lx_fluid + Lx_wall)_i,   Lx_wall = sum_q 2 s_q W_iq x_iq / d_n,
-// the Laplacian (4.85) of the coordinates (Lx_fluid from DensityGradientPass) times the
-// renormalised velocity gradient, so that the discrete operator vanishes on linear
-// velocity fields next to a wall. Without it the first rows of a channel see an O(1/dx)
-// spurious force and the wall-bounded flows converge at first order only
-// (docs/validation.md, Poiseuille). Away from walls the operator is left as it is,
-// momentum-conserving.
+// With Morris viscosity and no-slip walls (Consistent), the wall term carries the
+// weight s_i(x_iq) of the Laplacian exact for linear and quadratic fields
+// (kernels/ConsistentLaplacian.hpp), as the fluid pairs do.
 // Then every sum is divided by gamma_i:
 //   du_i = g + (fluid + wall sums) / gamma_i,  drho_i = (fluid + wall sums) / gamma_i.
-#include "kernels/DensityGradientPass.hpp"
+#include "kernels/ConsistentLaplacian.hpp"
 #include "kernels/NeighbourLoops.hpp"
 #include "kernels/WallPressure.hpp"
 #include "kernels/WallSet.hpp"
 
 namespace ondine {
 
-template <int D, class Kernel, bool Viscous, bool MorrisCorrection>
+template <int D, class Kernel, bool Viscous, bool Consistent>
 struct WallFluxPass {
-  static_assert(Viscous || !MorrisCorrection, "the Laplacian correction needs the viscous wall term");
+  static_assert(Viscous || !Consistent, "the consistent Laplacian needs the viscous wall term");
   WallPoints<D> wall;
   CellList<D> wall_cells;  // cell list of the wall points, same grid as the particles
   Kernel W;
   double R2;
   Vec<D> body;
   double nu;
-  double morris_factor;  // kappa of the fluid Morris sum (kernels/MorrisLatticeFactor.hpp)
   WallEos eos;
   double min_dn;               // |d_n| floor of the viscous wall term (0.05 R)
   PeriodicBox<D> box;
@@ -48,7 +41,7 @@ struct WallFluxPass {
   field_view_t<field::ShepardGamma, D> gamma;
   field_view_t<field::Acceleration, D> du;
   field_view_t<field::DensityRate, D> drho;
-  WallGradients<D> grads;  // velocity gradient G_i and Lx_fluid (DensityGradientPass)
+  LaplacianWeightView<D> weights;  // (A_i, b_i) of the consistent Laplacian (DensityGradientPass)
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<D> xi = load<D>(x, i), ui = load<D>(u, i);
@@ -56,43 +49,25 @@ struct WallFluxPass {
     const double c2 = eos.c2(rho_i);
     const double c_i = kmath::sqrt(c2);
     const Vec<D> g_rho = load<D>(grad_rho, i);
-    Mat<D> G = Mat<D>::zero();
-    if constexpr (MorrisCorrection)
-      for (int a = 0; a < D; ++a)
-        for (int b = 0; b < D; ++b) G.a[a][b] = grads.grad_u(i, a, b);
     Vec<D> acc = Vec<D>::zero();
-    Vec<D> lx_wall = Vec<D>::zero();
-    bool no_slip_near = false;
     double dr = 0.0;
     for_each_point_within<D>(wall_cells, box, wall.x, xi, R2, [&](const int q, const Vec<D>& xiq, const double r) {
       const double Wq = W.value(r) * wall.s(q);
       const Vec<D> n = load<D>(wall.n_out, q);
       const Vec<D> uq = load<D>(wall.u, q);
-      // density-only MUSCL state: the momentum reconstruction (G in place of 0) lets more particles
-      // through the walls in impacts and near-wall starts (measured: docs/validation.md)
-      const double P_p = normal_flux_pressure<D>(rho_i, P_i, c2, c_i, g_rho, Mat<D>::zero(), xiq, ui, uq, n);
+      const double P_p = normal_flux_pressure<D>(rho_i, P_i, c2, c_i, g_rho, xiq, ui, uq, n);
       // (2.105) shifts P_i + P_j by 2 P_min in the fluid sum; its wall counterpart keeps
       // the shift from pushing particles into the wall (sum_P w grad W + sum_S s W n = 0)
       acc += (-(P_p + P_i + 2.0 * P_min) * Wq / rho_i) * n;
       dr -= rho_i * dot(uq - ui, n) * Wq;
       if constexpr (Viscous) {
         if (wall.no_slip(q)) {
-          const double k = 2.0 * Wq / fluid_side_dn<D>(xiq, n, min_dn);
+          double k = 2.0 * Wq / fluid_side_dn<D>(xiq, n, min_dn);
+          if constexpr (Consistent) k *= LaplacianBasis<D>::weight(weights, i, xiq);
           acc += (nu * k) * (ui - uq);
-          if constexpr (MorrisCorrection) {
-            lx_wall += k * xiq;
-            no_slip_near = true;
-          }
         }
       }
     });
-    if constexpr (MorrisCorrection) {
-      if (no_slip_near) {
-        const Vec<D> lx = morris_factor * load<D>(grads.lap_x, i) + lx_wall;
-        for (int a = 0; a < D; ++a)
-          for (int b = 0; b < D; ++b) acc[a] -= nu * G.a[a][b] * lx[b];
-      }
-    }
     const double inv_gamma = 1.0 / gamma(i);
     for (int k = 0; k < D; ++k) du(i, k) = body[k] + (du(i, k) - body[k] + acc[k]) * inv_gamma;
     drho(i) = (drho(i) + dr) * inv_gamma;

@@ -40,7 +40,7 @@ struct WallTraction {
       const double w = m(i) / rho_i * W.value(r);
       const double c2 = eos.c2(rho_i);
       const Vec<D> ui = load<D>(u, i);
-      sp += w * normal_flux_pressure<D>(rho_i, P(i), c2, kmath::sqrt(c2), load<D>(grad_rho, i), Mat<D>::zero(), xiq, ui, uq, n);
+      sp += w * normal_flux_pressure<D>(rho_i, P(i), c2, kmath::sqrt(c2), load<D>(grad_rho, i), xiq, ui, uq, n);
       sv += (-w / fluid_side_dn<D>(xiq, n, min_dn)) * (ui - uq);
       sw += w;
     });

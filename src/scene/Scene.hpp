@@ -136,4 +136,12 @@ std::string to_string(EosLaw);
 std::string to_string(ViscousTerm);
 std::string to_string(TimeIntegrator);
 
+// The scene has a no-slip wall (viscous wall-bounded flows get the consistent Laplacian,
+// kernels/ConsistentLaplacian.hpp).
+inline bool has_no_slip_wall(const Scene& s) {
+  for (const Wall& w : s.walls)
+    if (w.condition == WallCondition::NoSlip) return true;
+  return false;
+}
+
 }  // namespace ondine

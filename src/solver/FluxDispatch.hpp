@@ -10,6 +10,7 @@
 #include "kernels/FluxPass.hpp"
 #include "kernels/terms/ArtificialViscosity.hpp"
 #include "kernels/terms/BackgroundPressure.hpp"
+#include "kernels/terms/ConsistentMorrisViscosity.hpp"
 #include "kernels/terms/Continuity.hpp"
 #include "kernels/terms/DeltaSphDiffusion.hpp"
 #include "kernels/terms/MonaghanGingoldViscosity.hpp"
@@ -28,6 +29,7 @@ template <int D, class T>
 T make_term(const FluxArgs<D>& a) {
   if constexpr (std::is_same<T, term::DeltaSphDiffusion<D>>::value) return T{a.delta_coeff, a.grad_rho};
   else if constexpr (std::is_same<T, term::MorrisViscosity>::value) return T{a.nu};
+  else if constexpr (std::is_same<T, term::ConsistentMorrisViscosity<D>>::value) return T{a.nu, a.laplacian_weights};
   else if constexpr (std::is_same<T, term::MonaghanGingoldViscosity>::value) return T{a.nu};
   else if constexpr (std::is_same<T, term::ArtificialViscosity>::value) return T{a.av_alpha_R_c0, 0.01 * a.R * a.R};
   else if constexpr (std::is_same<T, term::BackgroundPressure>::value) return T{a.P_min};
@@ -55,7 +57,10 @@ FluxFunction<D> with_av(const Scene& s, TypeList<T...>) {
 template <int D, class Kernel, class... T>
 FluxFunction<D> with_viscous(const Scene& s, TypeList<T...>) {
   switch (s.viscous_term) {
-    case ViscousTerm::Morris: return with_av<D, Kernel>(s, TypeList<T..., term::MorrisViscosity>{});
+    case ViscousTerm::Morris:
+      // no-slip NFM walls: the second-order consistent operator (kernels/ConsistentLaplacian.hpp)
+      if (has_no_slip_wall(s)) return with_av<D, Kernel>(s, TypeList<T..., term::ConsistentMorrisViscosity<D>>{});
+      return with_av<D, Kernel>(s, TypeList<T..., term::MorrisViscosity>{});
     case ViscousTerm::MonaghanGingold: return with_av<D, Kernel>(s, TypeList<T..., term::MonaghanGingoldViscosity>{});
     case ViscousTerm::None: break;
   }

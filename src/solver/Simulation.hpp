@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "kernels/CellList.hpp"
-#include "kernels/DensityGradientPass.hpp"
+#include "kernels/ConsistentLaplacian.hpp"
 #include "kernels/FluxArgs.hpp"
 #include "kernels/Integrator.hpp"
 #include "kernels/NeighbourList.hpp"
@@ -159,7 +159,7 @@ class Simulation {
   int rebalances_ = 0;
   FluxFunction<D> flux_ = nullptr;
   WallModel<D> walls_;
-  WallGradients<D> wall_grads_;  // scratch of evaluate(): velocity gradient, Laplacian of x
+  LaplacianWeightView<D> laplacian_weights_;  // scratch of evaluate() (kernels/ConsistentLaplacian.hpp)
   FluidRegion<D> region_;
   double stage_time_ = 0;
   double t_ = 0;

@@ -421,7 +421,8 @@ void Simulation<D>::evaluate() {
   a.m = p_.get(field::Mass{});
   a.du = p_.get(field::Acceleration{});
   a.drho = p_.get(field::DensityRate{});
-  a.nu = scene_.viscous_term == ViscousTerm::Morris ? scene_.nu * morris_factor_ : scene_.nu;
+  // the lattice factor scales the plain Morris term; the consistent one has its own A_i
+  a.nu = scene_.viscous_term == ViscousTerm::Morris && !has_no_slip_wall(scene_) ? scene_.nu * morris_factor_ : scene_.nu;
   a.delta_coeff = scene_.delta_sph * scene_.c0 * R_;
   a.av_alpha_R_c0 = scene_.artificial_viscosity * R_ * scene_.c0;
   detail::with_eos<D>(scene_, [&](auto eos) { update_pressure<D>(eos, a.rho, a.P, n_all); });
@@ -440,24 +441,25 @@ void Simulation<D>::evaluate() {
     update_walls(stage_time_);
     ShepardGammaPass<D>{walls_.segments(), R_, box_, a.x, p_.get(field::ShepardGamma{})}.run(n_all);
   }
-  const bool morris_walls = walls && scene_.viscous_term == ViscousTerm::Morris;
-  if (morris_walls && static_cast<int>(wall_grads_.grad_u.extent(0)) < n) {
-    // scratch of this evaluation (kernels/DensityGradientPass.hpp), grown with some slack
-    const int cap = n + n / 8 + 16;
-    wall_grads_.grad_u = decltype(wall_grads_.grad_u)("ondine::NFM::velocity_gradient", cap);
-    wall_grads_.lap_x = decltype(wall_grads_.lap_x)("ondine::NFM::laplacian_of_x", cap);
-  }
+  // viscous flows along no-slip walls: the consistent Laplacian (kernels/ConsistentLaplacian.hpp)
+  const bool morris_walls = walls && scene_.viscous_term == ViscousTerm::Morris && has_no_slip_wall(scene_);
+  if (morris_walls && static_cast<int>(laplacian_weights_.extent(0)) < n)  // grown with some slack
+    laplacian_weights_ = LaplacianWeightView<D>("ondine::NFM::laplacian_weights", n + n / 8 + 16);
   if (scene_.delta_sph > 0 || walls) {
     a.grad_rho = p_.get(field::DensityGradient{});
     with_kernel<D>(scene_.kernel, R_, [&](auto W) {
       using K = decltype(W);
       if (morris_walls)
-        DensityGradientPass<D, K, true, true>{list_, box_, W, R_ * R_, a.x, a.rho, a.m, a.grad_rho, a.u, wall_grads_}.run(n);
+        DensityGradientPass<D, K, true>{list_, box_, W, R_ * R_, a.x, a.rho, a.m, a.grad_rho,
+                                        {walls_.points(), walls_.cells(), 0.05 * R_, morris_factor_,
+                                         p_.get(field::ShepardGamma{}), laplacian_weights_}}
+            .run(n);
       else
         DensityGradientPass<D, K>{list_, box_, W, R_ * R_, a.x, a.rho, a.m, a.grad_rho}.run(n);
     });
     if (!comm_.serial()) exchange_.refresh(p_, comm_, field::DensityGradient{});
   }
+  if (morris_walls) a.laplacian_weights = laplacian_weights_;
   flux_(a);
   if (walls) {
     const double eos_gamma = scene_.eos == EosLaw::Tait ? scene_.tait_gamma : 1.0;
@@ -472,7 +474,6 @@ void Simulation<D>::evaluate() {
         pass.R2 = R_ * R_;
         pass.body = a.body;
         pass.nu = scene_.nu;
-        pass.morris_factor = morris_factor_;
         pass.eos = eos;
         pass.min_dn = 0.05 * R_;
         pass.box = box_;
@@ -485,7 +486,7 @@ void Simulation<D>::evaluate() {
         pass.gamma = gamma;
         pass.du = a.du;
         pass.drho = a.drho;
-        pass.grads = wall_grads_;
+        pass.weights = laplacian_weights_;
         pass.run(n);
       };
       if (morris_walls)

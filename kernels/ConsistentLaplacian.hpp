@@ -1,0 +1,114 @@
+#pragma once
+// A Morris / NFM Laplacian exact for linear and quadratic fields, for viscous flows
+// along no-slip walls (not in the thesis; docs/validation.md, Poiseuille). The pair
+// weight of particle i becomes direction-dependent:
+//   L(u)_i = sum_j c_ij s_i(x_ij) (u_i - u_j) + sum_q k_q s_i(x_iq) (u_i - u_q),
+//   s_i(x) = (x.A_i.x + b_i.x) / |x|^2,
+//   c_ij = w_j (rho_i + rho_j)/rho_i W'(r)/r (fluid, 2.31),  k_q = 2 s_q W_iq / d_n (no-slip wall points, 4.85),
+// with the symmetric matrix A_i and the vector b_i chosen so that L vanishes on linear
+// fields and equals tr H on u = 1/2 (x - x_i).H.(x - x_i): over the basis
+// psi = (x.E_p.x (x^2, y^2, 2xy in 2D), x_a), of size K = D(D+1)/2 + D,
+//   (sum_j c_ij psi psi^T / r^2 + sum_q k_q psi psi^T / r^2) (a, b) = gamma_i (-2 tr E_p, 0)
+// (gamma_i: the NFM flux is divided by the Shepard factor afterwards, kernels/WallFluxPass.hpp).
+// With A = I, b = 0 it is the plain operator. Why:
+//  - next to a wall, the plain NFM operator (4.85) on the particle lattice is not zero
+//    on linear fields (L(y) = 1.93, 1.28, 0.54 at R/dx = 3, 4, 6 in the first rows, an
+//    O(1/dx) force on a sheared flow) and misses y^2 by 1-2 %: Poiseuille converged at
+//    first order;
+//  - in the bulk, on the sheared lattice of a channel flow whose rows slide past each
+//    other, the plain operator's error on quadratics fluctuates by +-0.5 % from row to
+//    row and does not shrink with dx at fixed R/dx (measured on the Poiseuille particles).
+// The price: the pair weights are not antisymmetric (A_i != A_j), so momentum is
+// conserved only to the consistency error; this operator is used only in scenes with
+// no-slip walls, whose walls exchange momentum with the fluid anyway. Where the support
+// is cut by a free surface (discrete Shepard sum below 0.9 gamma_i), or the system is
+// singular or gives a non-positive diagonal, the weights fall back to the plain
+// operator scaled by the lattice factor kappa (kernels/MorrisLatticeFactor.hpp).
+#include "kernels/Fields.hpp"
+#include "kernels/Math.hpp"
+#include "kernels/Vec.hpp"
+
+namespace ondine {
+
+template <int D>
+using LaplacianWeightView = Kokkos::View<double* [D * (D + 1) / 2 + D], Kokkos::LayoutLeft, MemSpace>;
+
+// Solves M z = rhs in place (Gaussian elimination with partial pivoting; N <= 9).
+// Returns false when a pivot is below tiny times the largest diagonal entry.
+template <int N>
+KOKKOS_INLINE_FUNCTION bool solve_small(double (&M)[N][N], double (&z)[N], double tiny) {
+  double scale = 0.0;
+  for (int p = 0; p < N; ++p) scale = kmath::fmax(scale, kmath::fabs(M[p][p]));
+  if (!(scale > 0.0)) return false;
+  for (int c = 0; c < N; ++c) {
+    int piv = c;
+    for (int r = c + 1; r < N; ++r)
+      if (kmath::fabs(M[r][c]) > kmath::fabs(M[piv][c])) piv = r;
+    if (!(kmath::fabs(M[piv][c]) > tiny * scale)) return false;
+    if (piv != c) {
+      for (int k = 0; k < N; ++k) {
+        const double t = M[c][k];
+        M[c][k] = M[piv][k];
+        M[piv][k] = t;
+      }
+      const double t = z[c];
+      z[c] = z[piv];
+      z[piv] = t;
+    }
+    for (int r = c + 1; r < N; ++r) {
+      const double f = M[r][c] / M[c][c];
+      for (int k = c; k < N; ++k) M[r][k] -= f * M[c][k];
+      z[r] -= f * z[c];
+    }
+  }
+  for (int c = N - 1; c >= 0; --c) {
+    double s = z[c];
+    for (int k = c + 1; k < N; ++k) s -= M[c][k] * z[k];
+    z[c] = s / M[c][c];
+  }
+  return true;
+}
+
+template <int D>
+struct LaplacianBasis {
+  static constexpr int N = D * (D + 1) / 2;  // quadratic part
+  static constexpr int K = N + D;            // with the linear part
+  // psi(x): x_a^2 (a < D), then 2 x_a x_b (a < b), then x_a
+  KOKKOS_INLINE_FUNCTION static void psi(const Vec<D>& x, double* f) {
+    int p = 0;
+    for (int a = 0; a < D; ++a) f[p++] = x[a] * x[a];
+    for (int a = 0; a < D; ++a)
+      for (int b = a + 1; b < D; ++b) f[p++] = 2.0 * x[a] * x[b];
+    for (int a = 0; a < D; ++a) f[p++] = x[a];
+  }
+  // moments += c psi psi^T
+  KOKKOS_INLINE_FUNCTION static void accumulate(double (&moments)[K][K], double c, const Vec<D>& x) {
+    double f[K];
+    psi(x, f);
+    for (int p = 0; p < K; ++p)
+      for (int q = 0; q < K; ++q) moments[p][q] += c * f[p] * f[q];
+  }
+  // the weight s_i(x) = (x.A_i.x + b_i.x) / |x|^2 of a pair, from the stored (a, b)
+  template <class View>
+  KOKKOS_INLINE_FUNCTION static double weight(const View& ab, int i, const Vec<D>& x) {
+    double f[K];
+    psi(x, f);
+    double s = 0.0;
+    for (int p = 0; p < K; ++p) s += ab(i, p) * f[p];
+    return s / norm2(x);
+  }
+  // (a, b) from the moment system (consumed), or the fallback kappa I. The wall pass divides
+  // the particle's whole flux by gamma_i (4.20-4.25), so the system's right-hand side is
+  // gamma_i (-2 tr E_p, 0): the operator is exact after that division.
+  template <class View>
+  KOKKOS_INLINE_FUNCTION static void solve(double (&moments)[K][K], bool complete, double kappa, double gamma,
+                                           const View& ab, int i) {
+    double z[K];
+    for (int p = 0; p < K; ++p) z[p] = p < D ? -2.0 * gamma : 0.0;
+    bool ok = complete && solve_small<K>(moments, z, 1e-10);
+    for (int p = 0; p < D; ++p) ok = ok && z[p] > 0.0;
+    for (int p = 0; p < K; ++p) ab(i, p) = ok ? z[p] : (p < D ? kappa : 0.0);
+  }
+};
+
+}  // namespace ondine
