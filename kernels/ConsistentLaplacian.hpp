@@ -21,9 +21,11 @@
 // The price: the pair weights are not antisymmetric (A_i != A_j), so momentum is
 // conserved only to the consistency error; this operator is used only in scenes with
 // no-slip walls, whose walls exchange momentum with the fluid anyway. Where the support
-// is cut by a free surface (discrete Shepard sum below 0.9 gamma_i), or the system is
-// singular or gives a non-positive diagonal, the weights fall back to the plain
-// operator scaled by the lattice factor kappa (kernels/MorrisLatticeFactor.hpp).
+// is cut by a free surface (discrete Shepard sum below 0.9 gamma_i), where it meets
+// no-slip walls of different velocities (a lid corner: no smooth field fits the jump),
+// or where the system is singular or gives a non-positive diagonal, the weights fall
+// back to the plain operator scaled by the lattice factor kappa
+// (kernels/MorrisLatticeFactor.hpp).
 #include "kernels/Fields.hpp"
 #include "kernels/Math.hpp"
 #include "kernels/Vec.hpp"

@@ -79,14 +79,19 @@ struct DensityGradientPass {
     store<D>(grad_rho, i, g);
     if constexpr (ConsistentLaplacian) {
       // the no-slip wall points (4.85): k_q = 2 s_q W / d_n, the wall velocity as f_q
+      int first = -1;
+      bool smooth_wall_data = true;  // one wall velocity over the support (not a lid corner)
       for_each_point_within<D>(lap.wall_cells, box, lap.wall.x, xi, R2, [&](const int q, const Vec<D>& xiq, const double r) {
         if (!lap.wall.no_slip(q)) return;
         const double k = 2.0 * lap.wall.s(q) * W.value(r) / fluid_side_dn<D>(xiq, load<D>(lap.wall.n_out, q), lap.min_dn);
         Basis::accumulate(moments, k / (r * r), xiq);
+        if (first < 0) first = q;
+        else if (norm2(load<D>(lap.wall.u, q) - load<D>(lap.wall.u, first)) > 0.0) smooth_wall_data = false;
       });
-      // a support cut by a free surface keeps the plain operator (see ConsistentLaplacian.hpp)
+      // a support cut by a free surface, or meeting walls that move relative to each other
+      // (the velocity jump at a lid corner), keeps the plain operator (ConsistentLaplacian.hpp)
       const double gamma_i = lap.gamma(i);
-      Basis::solve(moments, shepard >= 0.9 * gamma_i, lap.kappa, gamma_i, lap.weights, i);
+      Basis::solve(moments, shepard >= 0.9 * gamma_i && smooth_wall_data, lap.kappa, gamma_i, lap.weights, i);
     }
   }
 

@@ -107,6 +107,18 @@ TEST_CASE("Poiseuille flow between no-slip NFM walls follows the start-up soluti
   CHECK(f[1].viscous[0] == Approx(expected).epsilon(0.2));
 }
 
+// Issue 4's convergence criterion on its first two rungs (the third, L/100, runs in
+// `ondine validate --level full`: 4.2e-5, order 1.92). Measured: 5.68e-4 at L/25 and
+// 1.59e-4 at L/50, order 1.84 (before the consistent Laplacian: 3.95e-3, 1.91e-3, order 1.05).
+TEST_CASE("Poiseuille between no-slip NFM walls converges at order >= 1.5", "[nfm][case][poiseuille]") {
+  const double e25 = run_case("poiseuille_2d.yaml", {}).errors().at("velocity_l2");
+  const double e50 = run_case("poiseuille_2d.yaml", {"discretisation.dx=0.02"}).errors().at("velocity_l2");
+  const double order = std::log(e25 / e50) / std::log(2.0);
+  INFO("velocity L2 error " << e25 << " (L/25), " << e50 << " (L/50): order " << order);
+  CHECK(e50 < 0.01);
+  CHECK(order >= 1.5);
+}
+
 TEST_CASE("Dam break (25 x 50 particles): surge front against Martin & Moyce, no leak", "[nfm][case][dam_break]") {
   Simulation<2> sim(load_case(src + "/cases/dam_break_2d.yaml", {"discretisation.dx=0.002286"}));
   const double a = 0.05715, g = 9.81;
