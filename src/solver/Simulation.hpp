@@ -24,6 +24,7 @@
 #include "particles/ParticleSet.hpp"
 #include "kernels/FluidRegion.hpp"
 #include "scene/Scene.hpp"
+#include "solver/AdaptiveRefinement.hpp"
 #include "solver/WallModel.hpp"
 
 namespace ondine {
@@ -118,6 +119,12 @@ class Simulation {
   // x of the leading edge of the fluid (max x + dx/2), for the dam-break front
   double front_position() const;
 
+  // adaptive particle refinement (only with refinement zones; docs/apr.md)
+  bool refinement_on() const { return apr_on_; }
+  const AdaptiveRefinement<D>& refinement() const { return apr_; }
+  // SPH particles (guards excluded) and guards on this rank
+  std::int64_t sph_particles() const;
+
  private:
   void fill(std::int64_t first, std::int64_t end);
   void load_checkpoint(const CheckpointSlice& restart);
@@ -132,12 +139,19 @@ class Simulation {
   void stage_update(double c_dt, double acc_weight, bool first);
   RungeKuttaViews<D> stage_views() const;
   void check_state(double dt);
+  // APR: the per-level derivative evaluation, the bookkeeping at a step start, the lists
+  void evaluate_levels();
+  void refinement_step_start();
+  void refinement_bookkeeping();
+  void rebuild_level_lists();
+  void update_free_surface_levels();
+  std::vector<ProbeSample> sample_levels(const std::vector<Vec3>& points) const;
 
   Scene scene_;
   Communicator comm_;
   ParticleSet<D> p_;
   PeriodicBox<D> box_;
-  double R_, cutoff_;
+  double R_, cutoff_, skin_len_ = 0;
   CellList<D> cells_;
   NeighbourList<D> list_;
   field_view_t<field::Position, D> x_at_build_;
@@ -161,6 +175,8 @@ class Simulation {
   std::int64_t steps_ = 0, builds_ = 0;
   bool list_valid_ = false;
   Diagnostics initial_;
+  AdaptiveRefinement<D> apr_;
+  bool apr_on_ = false;
 };
 
 extern template class Simulation<2>;
