@@ -46,6 +46,8 @@ ONDINE_FIELD(AprLevel, "level", int, false);
 ONDINE_FIELD(AprBirthLevel, "birth_level", int, false);
 ONDINE_FIELD(AprGuard, "guard", int, false);
 ONDINE_FIELD(AprMother, "mother", int, false);
+// global id of a daughter's mother (-1 at level 0): a mother's daughters leave with it
+ONDINE_FIELD_(AprParent, "parent_id", std::int64_t, false, false);
 ONDINE_FIELD_(StagePosition, "stage_position", double, true, false);
 ONDINE_FIELD_(StageVelocity, "stage_velocity", double, true, false);
 ONDINE_FIELD_(StageDensity, "stage_density", double, false, false);

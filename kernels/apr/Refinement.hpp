@@ -12,16 +12,18 @@ namespace ondine {
 
 namespace apr {
 
-enum Action : int { Keep = 0, Delete = 1, Refine = 2 };
+enum Action : int { Keep = 0, Delete = 1, Refine = 2, Derefine = 3 };
 
 // Per particle of level r = birth level (its radius R_r):
-//  - a daughter (r >= 1) beyond the transition layer of Z_r is deleted;
 //  - a particle that is not a mother and lies in E_{r+1} (Z_{r+1} with its
 //    transition layer) becomes a mother and creates 2^D daughters;
-//  - a mother more than dx_r / 2 beyond E_{r+1} stops being one: it is an SPH
-//    particle again, with the fields the guard interpolation (5.23 = 5.24) gave it.
-// The dx_r / 2 hysteresis lets its daughters (dx_r / 4 per axis from it) leave
-// E_{r+1}, and be deleted, no later than the mother stops being one.
+//  - a mother more than dx_r / 2 beyond E_{r+1} stops being one (Derefine): it is
+//    an SPH particle again, with the fields the guard interpolation (5.23 = 5.24)
+//    gave it, and its daughters are deleted with it (DaughterRemoval), wherever
+//    they are. Derefining families whole keeps the mass of the leaves exact; a
+//    daughter that drifts beyond its transition layer before its mother leaves
+//    is a passive guard until then (docs/apr.md). The dx_r / 2 hysteresis keeps a
+//    mother on the layer's edge from refining and derefining at every bookkeeping.
 template <int D>
 struct Classify {
   RefinementZones<D> zones;
@@ -33,10 +35,6 @@ struct Classify {
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<D> xi = load<D>(x, i);
     const int r = birth(i);
-    if (r >= 1 && zones.distance_to_level(xi, r) >= zones.layer[r]) {
-      action(i) = Delete;
-      return;
-    }
     action(i) = Keep;
     if (r >= zones.max_level) return;
     const double d = zones.distance_to_level(xi, r + 1);
@@ -45,7 +43,42 @@ struct Classify {
       action(i) = Refine;
     } else if (mother(i) == 1 && d >= zones.layer[r + 1] + 0.5 * zones.dx[r]) {
       mother(i) = 0;
+      action(i) = Derefine;
     }
+  }
+};
+
+// The global ids of the particles of level r - 1 whose daughters go: derefining
+// mothers, and deleted particles that were mothers (a family leaves whole).
+struct DyingScan {
+  Kokkos::View<int*, MemSpace> action, birth, was_mother;
+  Kokkos::View<std::int64_t*, MemSpace> id, dying;
+  int level;  // r - 1
+  KOKKOS_INLINE_FUNCTION bool dies(const int i) const {
+    return birth(i) == level && (action(i) == Derefine || (action(i) == Delete && was_mother(i) == 1));
+  }
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, int& k, const bool final) const {
+    if (!dies(i)) return;
+    if (final) dying(k) = id(i);
+    ++k;
+  }
+};
+
+// Daughters (level r) of a dying mother: Delete. `dying` is sorted (binary search).
+struct DaughterRemoval {
+  Kokkos::View<int*, MemSpace> action, birth;
+  Kokkos::View<std::int64_t*, MemSpace> parent, dying;
+  int level, count;  // r
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    if (birth(i) != level) return;
+    const std::int64_t p = parent(i);
+    int lo = 0, hi = count;
+    while (lo < hi) {
+      const int mid = (lo + hi) / 2;
+      if (dying(mid) < p) lo = mid + 1;
+      else hi = mid;
+    }
+    if (lo < count && dying(lo) == p) action(i) = Delete;
   }
 };
 
@@ -166,6 +199,7 @@ struct DaughterFill {
   field_view_t<field::GlobalId, D> id;
   field_view_t<field::AprBirthLevel, D> birth;
   field_view_t<field::AprMother, D> mother;
+  field_view_t<field::AprParent, D> parent;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int k) const {
     const int mi = kept_index(refining(k));
@@ -188,7 +222,36 @@ struct DaughterFill {
       id(f) = first_id + (static_cast<std::int64_t>(k) << D) + c;
       birth(f) = r + 1;
       mother(f) = 0;
+      parent(f) = id(mi);
     }
+  }
+};
+
+// Momentum change of the refinement itself, per component and in sum m|u| (for
+// scale): sum_f m_f u_f - m_m u_m over the new families (zero up to round-off,
+// since the prolongation offsets sum to zero; Table 5.1).
+template <int D>
+struct FamilyMomentum {
+  using value_type = double[];
+  int value_count = D + 1;
+  Kokkos::View<int*, MemSpace> refining, kept_index;
+  int kept;
+  field_view_t<field::Velocity, D> u;
+  field_view_t<field::Mass, D> m;
+  KOKKOS_INLINE_FUNCTION void init(double* v) const {
+    for (int c = 0; c <= D; ++c) v[c] = 0.0;
+  }
+  KOKKOS_INLINE_FUNCTION void join(volatile double* a, const volatile double* b) const {
+    for (int c = 0; c <= D; ++c) a[c] += b[c];
+  }
+  KOKKOS_INLINE_FUNCTION void operator()(const int k, double* v) const {
+    const int mi = kept_index(refining(k));
+    for (int a = 0; a < D; ++a) {
+      double s = -m(mi) * u(mi, a);
+      for (int c = 0; c < (1 << D); ++c) s += m(kept + (k << D) + c) * u(kept + (k << D) + c, a);
+      v[a] += s;
+    }
+    v[D] += m(mi) * kmath::sqrt(norm2(load<D>(u, mi)));
   }
 };
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include <Kokkos_Sort.hpp>
 #include <Kokkos_Timer.hpp>
 
 #include "kernels/CellList.hpp"
@@ -60,6 +61,9 @@ class AdaptiveRefinement {
   std::int64_t refined() const { return refined_; }    // mothers refined so far
   std::int64_t deleted() const { return deleted_; }    // daughters deleted so far
   double interpolation_seconds() const { return interp_seconds_; }
+  // sum over all refinements of sum_f m_f u_f - m_m u_m (component a), and of m_m |u_m|
+  double momentum_change(int a) const { return momentum_change_[a]; }
+  double momentum_scale() const { return momentum_scale_; }
   int guards() const {
     int g = 0;
     for (int l = 0; l < levels_; ++l) g += guard_end_[l] - active_end_[l];
@@ -77,6 +81,7 @@ class AdaptiveRefinement {
     p.allocate(field::AprBirthLevel{});
     p.allocate(field::AprGuard{});
     p.allocate(field::AprMother{});
+    Kokkos::deep_copy(p.allocate(field::AprParent{}), std::int64_t(-1));
     next_id_ = global_count;
   }
 
@@ -108,9 +113,25 @@ class AdaptiveRefinement {
   int update(ParticleSet<D>& p, const CellList<D>& cells, const PeriodicBox<D>& box, int n) {
     Kokkos::View<int*, MemSpace> action("ondine::APR::action", n), kept_index("ondine::APR::kept_index", n),
         refine_index("ondine::APR::refine_index", n);
+    // the mother flags before this pass (a deleted mother takes its daughters along)
+    Kokkos::View<int*, MemSpace> was_mother("ondine::APR::was_mother", n);
+    Kokkos::deep_copy(was_mother, p.get(field::AprMother{}));
     Kokkos::parallel_for("ondine::APR::classify", Kokkos::RangePolicy<ExecSpace>(0, n),
                          apr::Classify<D>{zones_, p.get(field::Position{}), p.get(field::AprBirthLevel{}),
                                           p.get(field::AprMother{}), action});
+    // derefinement (5.23): the daughters of each derefining (or deleted) mother, level by level
+    for (int l = 1; l < levels_; ++l) {
+      Kokkos::View<std::int64_t*, MemSpace> dying("ondine::APR::dying", n);
+      int count = 0;
+      Kokkos::parallel_scan("ondine::APR::dying", Kokkos::RangePolicy<ExecSpace>(0, n),
+                            apr::DyingScan{action, p.get(field::AprBirthLevel{}), was_mother, p.get(field::GlobalId{}), dying, l - 1},
+                            count);
+      if (count == 0) continue;
+      const auto ids = Kokkos::subview(dying, std::make_pair(0, count));
+      Kokkos::sort(ids);
+      Kokkos::parallel_for("ondine::APR::remove_daughters", Kokkos::RangePolicy<ExecSpace>(0, n),
+                           apr::DaughterRemoval{action, p.get(field::AprBirthLevel{}), p.get(field::AprParent{}), dying, l, count});
+    }
     apr::ActionScan::value_type totals;
     Kokkos::parallel_scan("ondine::APR::scan", Kokkos::RangePolicy<ExecSpace>(0, n),
                           apr::ActionScan{action, kept_index, refine_index}, totals);
@@ -135,7 +156,13 @@ class AdaptiveRefinement {
                            apr::DaughterFill<D>{zones_, box, refining, kept_index, grad, kept, next_id_,
                                                 p.get(field::Position{}), p.get(field::Velocity{}), p.get(field::Density{}),
                                                 p.get(field::Mass{}), p.get(field::GlobalId{}), p.get(field::AprBirthLevel{}),
-                                                p.get(field::AprMother{})});
+                                                p.get(field::AprMother{}), p.get(field::AprParent{})});
+      double dp[D + 1];
+      Kokkos::parallel_reduce("ondine::APR::family_momentum", Kokkos::RangePolicy<ExecSpace>(0, nref),
+                              apr::FamilyMomentum<D>{D + 1, refining, kept_index, kept, p.get(field::Velocity{}), p.get(field::Mass{})},
+                              dp);
+      for (int a = 0; a < D; ++a) momentum_change_[a] += dp[a];
+      momentum_scale_ += dp[D];
       next_id_ += nd;
       n = kept + nd;
     }
@@ -225,6 +252,7 @@ class AdaptiveRefinement {
   NeighbourList<D> l_dot_, l_cross_;
   std::int64_t next_id_ = 0, refined_ = 0, deleted_ = 0;
   double interp_seconds_ = 0;
+  double momentum_change_[D] = {}, momentum_scale_ = 0;
 };
 
 }  // namespace ondine
