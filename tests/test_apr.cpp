@@ -195,10 +195,12 @@ TEST_CASE("APR guard interpolation (5.24) reproduces a linear field inside a ful
   }
   std::printf("APR guard interpolation of a linear field: %d guards, max error u %.2e m/s, rho %.2e kg/m^3, grad rho %.2e\n",
               checked, err_u, err_rho, err_grad);
+  // round-off, amplified by the conditioning (~1e4) of the quadratic fit's normal
+  // equations (docs/apr.md): u ~ 1 m/s, rho - rho_ref ~ 1 kg/m^3 over a support
   CHECK(checked > 100);
-  CHECK(err_u < 1e-12);
-  CHECK(err_rho < 1e-9);   // rho ~ 1e3: relative 1e-12
-  CHECK(err_grad < 1e-7);  // grad ~ 5: through M2^{-1} with |d| ~ 1e-2 m
+  CHECK(err_u < 1e-10);
+  CHECK(err_rho < 1e-9);
+  CHECK(err_grad < 1e-7);  // grad ~ 5 kg/m^4, from the fit's linear coefficients / R
 }
 
 TEST_CASE("APR interaction lists: no symmetric pair mixes two radii; guards see SPH particles only", "[apr]") {
