@@ -6,8 +6,8 @@
 //    its resolution, "same level" is Algorithm 3's test (a mother one level up has
 //    the resolution of the daughters below); no pair of L. has two radii, so the
 //    pair loop needs no test. Guards have no L. row.
-//  - Lx (one way): for a guard i of level r (active or passive), the SPH particles j of every level
-//    within R_r + skin, the sources of its Shepard interpolation (5.24). SPH
+//  - Lx (one way): for a guard i (active or passive), the SPH particles j of every level
+//    within its interpolation radius + skin (R_r for a daughter guard of level r, R_{r+1} for a mother guard), the sources of its Shepard interpolation (5.24). SPH
 //    particles have no Lx row; guards never see guards.
 // Built in two passes (count, scan, fill) from the cell list, like NeighbourList.
 #include "kernels/NeighbourList.hpp"
@@ -26,13 +26,15 @@ struct LevelVisitor {
   field_view_t<field::Position, D> x;
   field_view_t<field::AprBirthLevel, D> birth;
   field_view_t<field::AprGuard, D> guard;
+  field_view_t<field::AprMother, D> mother;
   double cut2[kAprMaxLevels];  // (R_l + skin)^2
 
   template <class F>
   KOKKOS_INLINE_FUNCTION void operator()(const int i, F&& f) const {
     if ((guard(i) != 0) != Guards) return;
     const int r = birth(i);
-    const double c2 = cut2[r];
+    // a mother guard interpolates at its daughters' radius (GuardInterpolation.hpp)
+    const double c2 = Guards && mother(i) == 1 ? cut2[r + 1] : cut2[r];
     const Vec<D> xi = load<D>(x, i);
     int home[D];
     for (int k = 0; k < D; ++k) home[k] = g.coord(xi[k], k);

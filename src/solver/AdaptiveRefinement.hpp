@@ -175,34 +175,49 @@ class AdaptiveRefinement {
   // L. and Lx from a cell list of the current (sorted) positions.
   void build_lists(const ParticleSet<D>& p, const CellList<D>& cells, const PeriodicBox<D>& box, int n) {
     apr::LevelVisitor<D, false> dot{cells.grid, box, cells.cell_start, cells.sorted, p.get(field::Position{}),
-                                    p.get(field::AprBirthLevel{}), p.get(field::AprGuard{}), {}};
+                                    p.get(field::AprBirthLevel{}), p.get(field::AprGuard{}), p.get(field::AprMother{}), {}};
     for (int l = 0; l < kAprMaxLevels; ++l) dot.cut2[l] = (zones_.R[l] + skin_) * (zones_.R[l] + skin_);
     apr::build_list<D, false>(l_dot_, dot, n, "SymmetricList");
     apr::LevelVisitor<D, true> cross{cells.grid, box, cells.cell_start, cells.sorted, p.get(field::Position{}),
-                                     p.get(field::AprBirthLevel{}), p.get(field::AprGuard{}), {}};
+                                     p.get(field::AprBirthLevel{}), p.get(field::AprGuard{}), p.get(field::AprMother{}), {}};
     for (int l = 0; l < kAprMaxLevels; ++l) cross.cut2[l] = dot.cut2[l];
     apr::build_list<D, true>(l_cross_, cross, n, "GuardList");
+    if (psi_.extent(0) < l_cross_.neighbours.extent(0))
+      psi_ = Kokkos::View<double**, Kokkos::LayoutRight, MemSpace>("ondine::APR::guard_weights", l_cross_.neighbours.extent(0), D + 1);
+    weights_valid_ = false;
   }
 
   // Guard interpolation (5.24) of the velocity and density (and density gradient),
   // at the start of every Runge-Kutta stage, from the SPH particles of this stage;
   // with `passive`, of the passive guards too (at a bookkeeping and before an output).
+  // The shape functions are recomputed when invalidated (a new step, new lists) and
+  // always with `passive`.
   void interpolate(ParticleSet<D>& p, const PeriodicBox<D>& box, bool passive = false) {
     Kokkos::Timer timer;
-    with_kernel<D>(kernel_, 1.0, [&](auto W1) {
-      apr::GuardInterpolation<D, decltype(W1)> f{l_cross_, box, zones_, W1, p.get(field::Position{}),
-                                                 p.get(field::Velocity{}), p.get(field::Density{}), p.get(field::Mass{}),
-                                                 field_view_t<field::DensityGradient, D>(), p.get(field::AprBirthLevel{})};
-      if (p.has(field::DensityGradient{})) f.grad_rho = p.get(field::DensityGradient{});
-      for (int l = 0; l < levels_; ++l) {
-        const int e = passive ? end_[l] : guard_end_[l];
-        if (e > active_end_[l])
-          Kokkos::parallel_for("ondine::APR::GuardInterpolation", Kokkos::RangePolicy<ExecSpace>(active_end_[l], e), f);
-      }
-    });
+    if (passive || !weights_valid_) {
+      with_kernel<D>(kernel_, 1.0, [&](auto W1) {
+        apr::GuardWeights<D, decltype(W1)> f{l_cross_, box, zones_, W1, p.get(field::Position{}), p.get(field::Density{}),
+                                             p.get(field::Mass{}), p.get(field::AprBirthLevel{}), p.get(field::AprMother{}), psi_};
+        for (int l = 0; l < levels_; ++l) {
+          const int e = passive ? end_[l] : guard_end_[l];
+          if (e > active_end_[l])
+            Kokkos::parallel_for("ondine::APR::GuardWeights", Kokkos::RangePolicy<ExecSpace>(active_end_[l], e), f);
+        }
+      });
+      weights_valid_ = true;
+    }
+    apr::GuardApply<D> f{l_cross_, psi_, p.get(field::Velocity{}), p.get(field::Density{}), field_view_t<field::DensityGradient, D>()};
+    if (p.has(field::DensityGradient{})) f.grad_rho = p.get(field::DensityGradient{});
+    for (int l = 0; l < levels_; ++l) {
+      const int e = passive ? end_[l] : guard_end_[l];
+      if (e > active_end_[l])
+        Kokkos::parallel_for("ondine::APR::GuardInterpolation", Kokkos::RangePolicy<ExecSpace>(active_end_[l], e), f);
+    }
     Kokkos::fence();
     interp_seconds_ += timer.seconds();
   }
+  // positions moved (a new step): the shape functions are recomputed at the next interpolation
+  void invalidate_weights() { weights_valid_ = false; }
 
  private:
   void sort_by_role(ParticleSet<D>& p, int n) {
@@ -250,6 +265,8 @@ class AdaptiveRefinement {
   int levels_ = 1;
   std::vector<int> first_, active_end_, guard_end_, end_;
   NeighbourList<D> l_dot_, l_cross_;
+  Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> psi_;  // guard shape functions (Lx entry, value + gradient)
+  bool weights_valid_ = false;
   std::int64_t next_id_ = 0, refined_ = 0, deleted_ = 0;
   double interp_seconds_ = 0;
   double momentum_change_[D] = {}, momentum_scale_ = 0;

@@ -146,6 +146,8 @@ class Simulation {
   void rebuild_level_lists();
   void update_free_surface_levels();
   std::vector<ProbeSample> sample_levels(const std::vector<Vec3>& points) const;
+  void build_level_wall_cells();
+  const CellList<D>& wall_cells(int level) const { return level == 0 ? walls_.cells() : level_wall_cells_[level]; }
 
   Scene scene_;
   Communicator comm_;
@@ -177,6 +179,7 @@ class Simulation {
   Diagnostics initial_;
   AdaptiveRefinement<D> apr_;
   bool apr_on_ = false;
+  std::vector<CellList<D>> level_wall_cells_;  // APR with walls: wall points binned at each level's radius
 };
 
 extern template class Simulation<2>;

@@ -518,7 +518,7 @@ double Simulation<D>::time_step() const {
       const double Rl = apr_.R(l);
       with_kernel<D>(scene_.kernel, Rl, [&](auto W) {
         Kokkos::parallel_reduce("ondine::TimeStep::wall_viscous", Kokkos::RangePolicy<ExecSpace>(apr_.first(l), apr_.active_end(l)),
-                                WallViscousStiffness<D, decltype(W)>{walls_.points(), walls_.cells(), W, Rl * Rl, scene_.nu,
+                                WallViscousStiffness<D, decltype(W)>{walls_.points(), wall_cells(l), W, Rl * Rl, scene_.nu,
                                                                      0.05 * Rl, box_, p_.get(field::Position{}),
                                                                      p_.get(field::ShepardGamma{})},
                                 Kokkos::Max<double>(kmax));

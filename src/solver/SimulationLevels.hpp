@@ -42,6 +42,7 @@ void Simulation<D>::refinement_step_start() {
   const auto P = p_.get(field::Pressure{});
   const auto guard = p_.get(field::AprGuard{});
   const int n = n_own_;
+  apr_.invalidate_weights();  // positions moved since the last step
   const double moved = apr_.move(t_, steps_, [&](const RefinementZone& z, Vec3& at) {
     apr::MaxInBox<D> f{{}, {}, z.criterion == ZoneCriterion::Speed, x, u, P, guard};
     for (int k = 0; k < D; ++k) {
@@ -91,7 +92,10 @@ void Simulation<D>::evaluate_levels() {
     a.P_min = pmin < 0 ? -pmin : 0.0;
   }
   const bool walls = !walls_.empty();
-  if (walls) update_walls(stage_time_);
+  if (walls) {
+    update_walls(stage_time_);
+    if (walls_.moving() || level_wall_cells_.empty()) build_level_wall_cells();
+  }
   const bool gradient = scene_.delta_sph > 0 || walls;
   if (gradient) a.grad_rho = p_.get(field::DensityGradient{});
   for (int l = 0; l < apr_.levels(); ++l) {
@@ -124,22 +128,32 @@ void Simulation<D>::evaluate_levels() {
       const WallEos weos{scene_.rho0, scene_.c0, eos_gamma};
       if (scene_.viscous_term != ViscousTerm::None)
         Kokkos::parallel_for("ondine::NFM::WallFlux", Kokkos::RangePolicy<ExecSpace>(b, e),
-                             WallFluxPass<D, decltype(W), true>{walls_.points(), walls_.cells(), W, Rl * Rl, a.body, scene_.nu, weos,
+                             WallFluxPass<D, decltype(W), true>{walls_.points(), wall_cells(l), W, Rl * Rl, a.body, scene_.nu, weos,
                                                                 0.05 * Rl, box_, a.P_min, a.x, a.u, a.rho, a.P, a.grad_rho,
                                                                 p_.get(field::ShepardGamma{}), a.du, a.drho});
       else
         Kokkos::parallel_for("ondine::NFM::WallFlux", Kokkos::RangePolicy<ExecSpace>(b, e),
-                             WallFluxPass<D, decltype(W), false>{walls_.points(), walls_.cells(), W, Rl * Rl, a.body, scene_.nu, weos,
+                             WallFluxPass<D, decltype(W), false>{walls_.points(), wall_cells(l), W, Rl * Rl, a.body, scene_.nu, weos,
                                                                  0.05 * Rl, box_, a.P_min, a.x, a.u, a.rho, a.P, a.grad_rho,
                                                                  p_.get(field::ShepardGamma{}), a.du, a.drho});
     });
   }
 }
 
+// Cell lists of the wall points with cells of level l's radius (l >= 1): a fine
+// particle then visits the wall points of its own neighbourhood, not of the coarse one.
+template <int D>
+void Simulation<D>::build_level_wall_cells() {
+  level_wall_cells_.resize(apr_.levels());
+  for (int l = 1; l < apr_.levels(); ++l)
+    level_wall_cells_[l].build(make_cell_grid(box_, apr_.R(l)), walls_.points().x, walls_.points().count);
+}
+
 template <int D>
 void Simulation<D>::update_free_surface_levels() {
   ensure_neighbours();
   const bool walls = !walls_.empty();
+  if (walls && level_wall_cells_.empty()) build_level_wall_cells();
   for (int l = 0; l < apr_.levels(); ++l) {
     const int b = apr_.first(l), e = apr_.active_end(l);
     if (e == b) continue;
@@ -152,12 +166,12 @@ void Simulation<D>::update_free_surface_levels() {
       using K = decltype(W);
       if (!walls)
         Kokkos::parallel_for("ondine::FreeSurface", Kokkos::RangePolicy<ExecSpace>(b, e),
-                             FreeSurfacePass<D, K, false>{apr_.symmetric_list(), box_, W, Rl, Rl * Rl, walls_.points(), walls_.cells(),
+                             FreeSurfacePass<D, K, false>{apr_.symmetric_list(), box_, W, Rl, Rl * Rl, walls_.points(), wall_cells(l),
                                                           p_.get(field::Position{}), p_.get(field::Density{}), p_.get(field::Mass{}),
                                                           field_view_t<field::ShepardGamma, D>(), p_.get(field::FreeSurface{})});
       else
         Kokkos::parallel_for("ondine::FreeSurface", Kokkos::RangePolicy<ExecSpace>(b, e),
-                             FreeSurfacePass<D, K, true>{apr_.symmetric_list(), box_, W, Rl, Rl * Rl, walls_.points(), walls_.cells(),
+                             FreeSurfacePass<D, K, true>{apr_.symmetric_list(), box_, W, Rl, Rl * Rl, walls_.points(), wall_cells(l),
                                                          p_.get(field::Position{}), p_.get(field::Density{}), p_.get(field::Mass{}),
                                                          p_.get(field::ShepardGamma{}), p_.get(field::FreeSurface{})});
     });
