@@ -166,7 +166,7 @@ void Simulation<D>::update_free_surface_levels() {
       using K = decltype(W);
       if (!walls)
         Kokkos::parallel_for("ondine::FreeSurface", Kokkos::RangePolicy<ExecSpace>(b, e),
-                             FreeSurfacePass<D, K, false>{apr_.symmetric_list(), box_, W, Rl, Rl * Rl, walls_.points(), wall_cells(l),
+                             FreeSurfacePass<D, K, false>{apr_.symmetric_list(), box_, W, Rl, Rl * Rl, walls_.points(), walls_.cells(),
                                                           p_.get(field::Position{}), p_.get(field::Density{}), p_.get(field::Mass{}),
                                                           field_view_t<field::ShepardGamma, D>(), p_.get(field::FreeSurface{})});
       else
