@@ -327,3 +327,56 @@ TEST_CASE("Refinement zones: bad input names the file, line and key", "[unit][ca
              Catch::Contains("either moves with a velocity or follows a criterion"));
   CHECK_THAT(error_of("    - {name: a, min: [0.5, 0.1], max: [0.1, 0.4]}\n"), Catch::Contains("expected max > min"));
 }
+
+TEST_CASE("APR: a zone moving through fluid at rest refines ahead of it and derefines behind it", "[apr]") {
+  std::string y =
+      "dimension: 2\n"
+      "domain: {min: [0, 0], max: [0.6, 0.4], periodic: [true, true]}\n"
+      "fluid: {rho0: 1000, sound_speed: 10}\n"
+      "discretisation: {dx: 0.02, R_over_dx: 3}\n"
+      "fluid_blocks: [{min: [0, 0], max: [0.6, 0.4]}]\n"
+      "scheme: {time_integrator: rk4}\n"
+      "time: {duration: 1, output_interval: 1}\n"
+      "refinement: {zones: [{name: box, min: [0.1, 0.12], max: [0.2, 0.28], velocity: [1.0, 0]}]}\n";
+  Simulation<2> sim(parse_case(y, "moving.yaml"));
+  const double m0 = sim.diagnostics().mass;
+  const std::int64_t refined0 = sim.refinement().refined();
+  double worst = 0, max_speed = 0;
+  while (sim.time() < 0.25) {  // the box moves 0.25 m: past its own length and layers
+    sim.step(1.0);
+    const Diagnostics d = sim.diagnostics();
+    worst = std::max(worst, std::abs(d.mass - m0) / m0);
+    max_speed = std::max(max_speed, d.max_speed);
+  }
+  const auto& z = sim.refinement().zones();
+  std::printf("APR moving zone: box at x = [%.4f, %.4f] after %.3f s; %lld refinements after the start, %lld daughters deleted; "
+              "leaf-mass drift %.2e; max speed %.2e m/s\n",
+              z.lo[0][0], z.hi[0][0], sim.time(), static_cast<long long>(sim.refinement().refined() - refined0),
+              static_cast<long long>(sim.refinement().deleted()), worst, max_speed);
+  CHECK(z.lo[0][0] == Approx(0.1 + sim.time()).margin(2e-3));  // placed at each step's start (dt ~ 1e-3 s)
+  CHECK(sim.refinement().refined() - refined0 > 50);
+  CHECK(sim.refinement().deleted() > 200);
+  CHECK(worst <= 1e-12);
+  CHECK(max_speed < 1e-6);  // the fluid at rest stays at rest while the levels move through it
+}
+
+TEST_CASE("APR: a zone following the speed is re-centred on the fastest SPH particle of its search region", "[apr]") {
+  std::string y =
+      "dimension: 2\n"
+      "domain: {min: [0, 0], max: [0.4, 0.4], periodic: [true, true]}\n"
+      "fluid: {rho0: 1000, sound_speed: 10}\n"
+      "discretisation: {dx: 0.02, R_over_dx: 3}\n"
+      "fluid_blocks: [{min: [0, 0], max: [0.4, 0.4], velocity: {taylor_green: {amplitude: 1.0, wavelength: 0.4}}}]\n"
+      "scheme: {time_integrator: rk4}\n"
+      "time: {duration: 1, output_interval: 1}\n"
+      "refinement: {zones: [{name: box, min: [0.15, 0.15], max: [0.25, 0.25], follow: speed, search_min: [0.0, 0.05],"
+      " search_max: [0.4, 0.15], every: 1}]}\n";
+  Simulation<2> sim(parse_case(y, "follow.yaml"));
+  sim.step(1.0);
+  // |u| of the Taylor-Green field peaks on y = 0.1 (sin(k y) = 1) at x = 0, 0.2, 0.4: the box centre moves onto y ~ 0.1
+  const auto& z = sim.refinement().zones();
+  const double yc = 0.5 * (z.lo[0][1] + z.hi[0][1]);
+  std::printf("APR following zone: centre y = %.4f (the speed peaks on y = 0.1)\n", yc);
+  CHECK(std::abs(yc - 0.1) <= 0.011);  // the particle nearest the peak line (dx / 2)
+  CHECK(z.hi[0][0] - z.lo[0][0] == Approx(0.1));
+}
