@@ -506,8 +506,11 @@ double Simulation<D>::time_step() const {
                           MaxNorm2<D, std::decay_t<decltype(du)>>{du}, Kokkos::Max<double>(a2max));
   cmax = comm_.max(cmax);
   a2max = comm_.max(a2max);
-  // one global step, bounded by the finest level with refinement zones
-  const double R = apr_on_ ? apr_.R(apr_.levels() - 1) : R_;
+  // one global step, bounded by the finest level that has SPH particles (with refinement zones)
+  double R = R_;
+  if (apr_on_)
+    for (int l = 0; l < apr_.levels(); ++l)
+      if (apr_.active_end(l) > apr_.first(l)) R = apr_.R(l);
   double dt = scene_.cfl_acoustic * R / cmax;
   if (scene_.nu > 0) dt = std::min(dt, scene_.cfl_viscous * R * R / scene_.nu);
   if (a2max > 0) dt = std::min(dt, scene_.cfl_force * std::sqrt(R / std::sqrt(a2max)));
