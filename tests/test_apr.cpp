@@ -202,7 +202,7 @@ TEST_CASE("APR guard interpolation (5.24) reproduces a linear field inside a ful
   CHECK(err_grad < 1e-9);
 }
 
-TEST_CASE("APR interaction lists: no symmetric pair mixes two radii; guards see SPH particles only", "[apr]") {
+TEST_CASE("APR interaction lists: no symmetric pair mixes two radii, guards see SPH particles only", "[apr]") {
   const std::string y =
       "dimension: 2\n"
       "domain: {min: [0, 0], max: [0.64, 0.64], periodic: [true, true]}\n"
