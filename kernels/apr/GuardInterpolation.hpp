@@ -22,6 +22,7 @@
 // (read by delta-SPH and the walls of the SPH neighbours) comes from the same fit;
 // the SPH particles' own gradient is the renormalised one (2.42-2.44).
 #include "kernels/NeighbourList.hpp"
+#include "kernels/WallSet.hpp"
 #include "kernels/apr/RefinementZones.hpp"
 
 namespace ondine {
@@ -207,6 +208,27 @@ struct GuardApply {
   field_view_t<field::Velocity, D> u;
   field_view_t<field::Density, D> rho;
   field_view_t<field::DensityGradient, D> grad_rho;  // unallocated: not interpolated
+  // NFM walls (count 0 without): a guard is not integrated, so no wall term keeps it
+  // in the fluid; within dx_l / 2 of a wall segment the part of its interpolated
+  // velocity that points into the wall is removed (no penetration).
+  WallSegments<D> seg;
+  RefinementZones<D> zones;
+  field_view_t<field::Position, D> x;
+  field_view_t<field::AprBirthLevel, D> birth;
+
+  KOKKOS_INLINE_FUNCTION void no_penetration(const int i, Vec<D>& ui) const {
+    const Vec<D> xi = load<D>(x, i);
+    const double reach = 0.5 * zones.dx[birth(i)];
+    for (int k = 0; k < seg.count; ++k) {
+      const Vec<D> a = load<D>(seg.a, k), b = load<D>(seg.b, k), n = load<D>(seg.n_in, k);
+      const Vec<D> ab = b - a;
+      const double t = dot(xi - a, ab) / norm2(ab);
+      if (t < 0.0 || t > 1.0) continue;
+      const double d = dot(xi - a, n);  // > 0 on the fluid side
+      const double un = dot(ui, n);
+      if (d < reach && un < 0.0) ui -= un * n;
+    }
+  }
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const int first = lx.offsets(i), nn = lx.num_neighbours(i);
@@ -226,7 +248,9 @@ struct GuardApply {
       for (int c = 0; c < D; ++c) g[c] += psi(first + n, 1 + c) * dr;
     }
     if (sum == 0.0) return;  // no source within the radius
-    store<D>(u, i, u0 + ui);
+    ui += u0;
+    no_penetration(i, ui);
+    store<D>(u, i, ui);
     rho(i) = r0 + ri;
     if (grad_rho.data() != nullptr) store<D>(grad_rho, i, g);
   }

@@ -192,7 +192,8 @@ class AdaptiveRefinement {
   // with `passive`, of the passive guards too (at a bookkeeping and before an output).
   // The shape functions are recomputed when invalidated (a new step, new lists) and
   // always with `passive`.
-  void interpolate(ParticleSet<D>& p, const PeriodicBox<D>& box, bool passive = false) {
+  void interpolate(ParticleSet<D>& p, const PeriodicBox<D>& box, bool passive = false,
+                   const WallSegments<D>& walls = WallSegments<D>()) {
     Kokkos::Timer timer;
     if (passive || !weights_valid_) {
       with_kernel<D>(kernel_, 1.0, [&](auto W1) {
@@ -206,7 +207,8 @@ class AdaptiveRefinement {
       });
       weights_valid_ = true;
     }
-    apr::GuardApply<D> f{l_cross_, psi_, p.get(field::Velocity{}), p.get(field::Density{}), field_view_t<field::DensityGradient, D>()};
+    apr::GuardApply<D> f{l_cross_, psi_, p.get(field::Velocity{}), p.get(field::Density{}), field_view_t<field::DensityGradient, D>(),
+                         walls, zones_, p.get(field::Position{}), p.get(field::AprBirthLevel{})};
     if (p.has(field::DensityGradient{})) f.grad_rho = p.get(field::DensityGradient{});
     for (int l = 0; l < levels_; ++l) {
       const int e = passive ? end_[l] : guard_end_[l];

@@ -905,7 +905,7 @@ void Simulation<D>::prepare_output() {
   refresh_halos();
   if (apr_on_) {
     ensure_neighbours();
-    apr_.interpolate(p_, box_, true);  // the guards of the stored state (5.24)
+    apr_.interpolate(p_, box_, true, walls_.segments());  // the guards of the stored state (5.24)
   }
   const int n = static_cast<int>(p_.size());
   detail::with_eos<D>(scene_, [&](auto eos) {

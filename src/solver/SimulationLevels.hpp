@@ -15,7 +15,7 @@ void Simulation<D>::refinement_bookkeeping() {
   n_own_ = apr_.update(p_, cells_, box_, n_own_);
   list_valid_ = false;
   rebuild_level_lists();
-  apr_.interpolate(p_, box_, true);  // passive guards: once per bookkeeping
+  apr_.interpolate(p_, box_, true, walls_.segments());  // passive guards: once per bookkeeping
 }
 
 template <int D>
@@ -71,7 +71,8 @@ template <int D>
 void Simulation<D>::evaluate_levels() {
   ensure_neighbours();  // lists only: roles change at a step start (refinement_step_start)
   const int n = n_own_;
-  apr_.interpolate(p_, box_);  // guards from this stage's SPH particles (5.24)
+  if (!walls_.empty()) update_walls(stage_time_);
+  apr_.interpolate(p_, box_, false, walls_.segments());  // guards from this stage's SPH particles (5.24)
   FluxArgs<D> a;
   a.list = apr_.symmetric_list();
   a.box = box_;
