@@ -37,6 +37,17 @@ ONDINE_FIELD(FreeSurface, "free_surface", double, false);
 // Integrator stage storage (not written to snapshots): the state y0 at the start
 // of the step and the RK4 weighted sum of the stage derivatives. Particle fields,
 // so that they follow a particle that changes rank in the middle of a step.
+// Adaptive particle refinement (thesis 5.4, docs/apr.md), allocated only when the
+// scene has refinement zones: the birth level n^B (the level whose spacing and
+// radius the particle has, 0 = coarse), the current level n^C (depth of the zones
+// at its position), the guard flag (1: Omega_x, interpolated by 5.24; 0: an SPH
+// particle of Omega_.) and the mother flag (1: it has daughters).
+ONDINE_FIELD(AprLevel, "level", int, false);
+ONDINE_FIELD(AprBirthLevel, "birth_level", int, false);
+ONDINE_FIELD(AprGuard, "guard", int, false);
+ONDINE_FIELD(AprMother, "mother", int, false);
+// global id of a daughter's mother (-1 at level 0): a mother's daughters leave with it
+ONDINE_FIELD_(AprParent, "parent_id", std::int64_t, false, false);
 ONDINE_FIELD_(StagePosition, "stage_position", double, true, false);
 ONDINE_FIELD_(StageVelocity, "stage_velocity", double, true, false);
 ONDINE_FIELD_(StageDensity, "stage_density", double, false, false);

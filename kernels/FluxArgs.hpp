@@ -8,6 +8,7 @@ namespace ondine {
 
 template <int D>
 struct FluxArgs {
+  int first = 0;  // the pass covers particles [first, first + n) (one APR level; 0 otherwise)
   int n = 0;
   NeighbourList<D> list;
   PeriodicBox<D> box;

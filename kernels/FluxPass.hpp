@@ -54,9 +54,11 @@ struct FluxPass {
     drho(i) = s.drho;
   }
 
-  void run(int n) const {
+  void run(int n) const { run(0, n); }
+  // particles [first, end): the SPH particles of one APR level (contiguous)
+  void run(int first, int end) const {
     const std::string label = "ondine::Flux[" + TermPack::names() + "]";
-    Kokkos::parallel_for(label, Kokkos::RangePolicy<ExecSpace>(0, n), *this);
+    Kokkos::parallel_for(label, Kokkos::RangePolicy<ExecSpace>(first, end), *this);
   }
 };
 

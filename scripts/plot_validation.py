@@ -54,6 +54,11 @@ def error_panel(ax, rs):
         ax.loglog(*zip(*pts), "o-", label=name)
         if len(pts) == 1:
             ax.annotate(f"{pts[0][1]:.3g}", pts[0], fontsize=7)
+        # APR comparisons: name each point (coarse uniform, APR, fine uniform)
+        for r in rs:
+            if r.get("variant") and r["errors"].get(name, 0) > 0:
+                ax.annotate(r["variant"], (r["wall_seconds"], r["errors"][name]), fontsize=7,
+                            xytext=(3, 3), textcoords="offset points")
     ax.set_xlabel("wall time (s)")
     ax.set_ylabel("error")
     ax.set_title("error against wall time")
@@ -67,7 +72,7 @@ def solution_panel(ax, out, src, case, rs):
     drawn = False
     for k, r in enumerate(rs):
         d = os.path.join(out, r["dir"])
-        lab = f"res {r['resolution']:.3g}"
+        lab = r["variant"] if r.get("variant") else f"res {r['resolution']:.3g}"
         prof, front, diag = table(d + "/profile.csv"), table(d + "/front.csv"), table(d + "/diagnostics.csv")
         last = k == len(rs) - 1
         if front:
@@ -177,7 +182,9 @@ def main(argv):
         plt.close(fig)
         figures.append("![error against wall time](error_vs_wall_time.png)\n")
     for case in cases:
-        rs = sorted((r for r in runs if r["case"] == case), key=lambda r: r["resolution"])
+        # (APR comparisons: in wall-time order, which is coarse, APR, fine)
+        rs = sorted((r for r in runs if r["case"] == case),
+                    key=lambda r: (r["wall_seconds"] if r.get("variant") else r["resolution"]))
         fig, axes = plt.subplots(1, 3, figsize=(13, 3.6))
         error_panel(axes[0], rs)
         if not solution_panel(axes[1], out, src, case, rs):

@@ -74,6 +74,13 @@ TEST_CASE("A minimal scene launches no kernel and allocates no field it does not
   CHECK_FALSE(any_contains(kernels_launched, "ondine::Migrate"));
   CHECK_FALSE(any_contains(kernels_launched, "ondine::Decomposition"));
   CHECK(views_allocated.count("ondine::particles::position") == 1);
+  // no refinement zone: the uniform code path (no APR kernel, field or list)
+  CHECK_FALSE(any_contains(kernels_launched, "APR"));
+  CHECK_FALSE(any_contains(views_allocated, "APR"));
+  CHECK_FALSE(any_contains(views_allocated, "ondine::particles::level"));
+  CHECK_FALSE(any_contains(views_allocated, "ondine::particles::birth_level"));
+  CHECK_FALSE(any_contains(views_allocated, "ondine::particles::guard"));
+  CHECK_FALSE(any_contains(views_allocated, "ondine::particles::mother"));
 }
 
 TEST_CASE("The full scheme launches and allocates what its terms need", "[physics]") {
@@ -90,4 +97,29 @@ TEST_CASE("The full scheme launches and allocates what its terms need", "[physic
   CHECK(kernels_launched.count("ondine::BackgroundPressure::min") == 1);
   CHECK(views_allocated.count("ondine::particles::density_gradient") == 1);
   CHECK(views_allocated.count("ondine::particles::stage_position_sum") == 1);
+  CHECK_FALSE(any_contains(kernels_launched, "APR"));
+  CHECK_FALSE(any_contains(views_allocated, "APR"));
+  CHECK_FALSE(any_contains(views_allocated, "ondine::particles::level"));
+  CHECK_FALSE(any_contains(views_allocated, "ondine::particles::guard"));
+}
+
+TEST_CASE("Refinement zones bring the APR kernels, fields and lists", "[physics][apr]") {
+  Scene s = periodic_box(2, 0.4, 0.02, "{viscous_term: morris, delta_sph: 0.1}", ", viscosity: 1.0e-3");
+  RefinementZone z;
+  z.name = "box";
+  z.box.min = {0.12, 0.12, 0};
+  z.box.max = {0.28, 0.28, 0};
+  s.refinement_zones.push_back(z);
+  Recording rec;
+  Simulation<2> sim(s);
+  sim.step(1.0);
+  INFO("kernels:\n" << listing(kernels_launched) << "views:\n" << listing(views_allocated));
+  CHECK(kernels_launched.count("ondine::APR::GuardInterpolation") == 1);
+  CHECK(kernels_launched.count("ondine::APR::SymmetricList::fill") == 1);
+  CHECK(kernels_launched.count("ondine::APR::GuardList::fill") == 1);
+  CHECK(kernels_launched.count("ondine::APR::daughters") == 1);
+  CHECK(views_allocated.count("ondine::particles::birth_level") == 1);
+  CHECK(views_allocated.count("ondine::particles::guard") == 1);
+  // the pair loop is the uniform one, run per level (no APR term in the pack)
+  CHECK(kernels_launched.count("ondine::Flux[pressure_gradient+continuity+delta_sph+morris_viscosity]") == 1);
 }

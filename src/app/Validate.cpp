@@ -25,6 +25,10 @@ struct Rung {
   double dx;
   bool full_only;
   bool accuracy = true;  // false: only the stability figures (non_finite, max_*) are bounded on this rung
+  // APR comparisons: the run's name (coarse, apr, fine: its folder) and, for the APR
+  // run, its own case file (the uniform runs use the case's)
+  std::string variant = "";
+  std::string file = "";
 };
 
 // One validation case: its file, the length that defines "resolution"
@@ -40,6 +44,7 @@ struct ValidationCase {
   // front_contrast_difference compares the two surge fronts (dam break)
   std::vector<std::string> contrast = {};
   std::vector<std::string> shown = {};  // errors shown in the table without a bound
+  std::vector<std::string> quick_sets = {};  // overrides added at the quick level only
 };
 
 // The four stability checks, plus a case's own bounds.
@@ -103,6 +108,21 @@ const std::vector<ValidationCase>& catalogue() {
       {"stability_free_fall_high_mach", "cases/free_fall_2d.yaml", 1.0, {{0.04, false}, {0.02, true}},
        {{"non_finite", 0.5}, {"max_density_deviation", 0.1}, {"momentum_balance_error", 1e-10}},
        {"fluid.mach=0.3", "time.duration=1.0"}},
+      // Adaptive particle refinement (`--case apr`; docs/apr.md): coarse uniform, APR and fine
+      // uniform runs of one case. Poiseuille Re = 1 (thesis Table 5.3), refinement bands 0.2 L along
+      // both walls, to t = 2 s (quick: 0.5 s); the near-wall error (particles whose support the walls
+      // cut) and the wall time of the APR run over the fine run's are added to the APR run's figures.
+      {"apr_poiseuille_re1_2d", "cases/poiseuille_re1_2d.yaml", 1.0,
+       {{0.025, false, true, "coarse"}, {0.025, false, true, "apr", "cases/poiseuille_re1_apr_2d.yaml"}, {0.0125, false, true, "fine"}},
+       stable({{"velocity_l2_near_wall", 0.0135}, {"velocity_l2", 0.005}}), {}, {}, {"near_wall_error_over_fine", "wall_time_over_fine"},
+       {"time.duration=0.5", "time.output_interval=0.25"}},
+      // 2D dam break with a refinement box at the foot of the right wall, where the surge hits it
+      // (to t = 0.35 s; quick: 0.25 s): the front against Martin & Moyce, and the pressure at the
+      // right-wall probe against the fine run's (relative L2 over time)
+      {"apr_dam_break_2d", "cases/dam_break_impact_2d.yaml", 0.05715,
+       {{0.002286, false, true, "coarse"}, {0.002286, false, true, "apr", "cases/dam_break_apr_2d.yaml"}, {0.001143, false, true, "fine"}},
+       stable({{"front_max_relative_error", 0.2}}), {}, {}, {"probe_pressure_difference_vs_fine", "wall_time_over_fine"},
+       {"time.duration=0.25"}},
   };
   return c;
 }
@@ -201,20 +221,22 @@ int run_validation(const ValidateOptions& opt) {
   namespace fs = std::filesystem;
   // no --case: the accuracy cases; --case stability: the stability suite
   auto stability = [](const std::string& n) { return n.rfind("stability", 0) == 0; };
+  auto apr = [](const std::string& n) { return n.rfind("apr_", 0) == 0; };
   // --case all: both
   auto asked = [&](const std::string& n) { return std::find(opt.cases.begin(), opt.cases.end(), n) != opt.cases.end(); };
-  const bool want_all = asked("all"), want_stability = want_all || asked("stability");
+  const bool want_all = asked("all"), want_stability = want_all || asked("stability"), want_apr = want_all || asked("apr");
   std::vector<const ValidationCase*> chosen;
   for (const ValidationCase& c : catalogue())
-    if (((opt.cases.empty() || want_all) && !stability(c.name)) || (want_stability && stability(c.name)) || asked(c.name))
+    if (((opt.cases.empty() || want_all) && !stability(c.name) && !apr(c.name)) || (want_stability && stability(c.name)) ||
+        (want_apr && apr(c.name)) || asked(c.name))
       chosen.push_back(&c);
   for (const std::string& n : opt.cases) {
-    bool known = n == "stability" || n == "all";
+    bool known = n == "stability" || n == "all" || n == "apr";
     for (const ValidationCase& c : catalogue()) known = known || c.name == n;
     if (!known) {
       std::string list;
       for (const ValidationCase& c : catalogue()) list += " " + c.name;
-      std::fprintf(stderr, "ondine validate: unknown case '%s'; expected all, stability or one of:%s\n", n.c_str(), list.c_str());
+      std::fprintf(stderr, "ondine validate: unknown case '%s'; expected all, stability, apr or one of:%s\n", n.c_str(), list.c_str());
       return 2;
     }
   }
@@ -235,15 +257,17 @@ int run_validation(const ValidateOptions& opt) {
     for (const Rung& r : c->ladder) {
       if (r.full_only && opt.level != "full") continue;
       std::vector<std::string> sets = c->sets;
+      if (opt.level != "full") sets.insert(sets.end(), c->quick_sets.begin(), c->quick_sets.end());
       std::ostringstream dx;
       dx.precision(17);
       dx << r.dx;
       sets.push_back("discretisation.dx=" + dx.str());
       const double resolution = c->length / r.dx;
-      const std::string rel = c->name + "/res_" + std::to_string(static_cast<long>(std::lround(resolution)));
+      const std::string rel = r.variant.empty() ? c->name + "/res_" + std::to_string(static_cast<long>(std::lround(resolution)))
+                                                : c->name + "/" + r.variant;
       double u_ref = 0, rho0 = 0;
       auto run_one = [&](const std::vector<std::string>& overrides, const std::string& dir) {
-        const Scene scene = load_case(opt.source_dir + "/" + c->file, overrides);
+        const Scene scene = load_case(opt.source_dir + "/" + (r.file.empty() ? c->file : r.file), overrides);
         RunOptions ro;
         ro.out_dir = opt.out_dir + "/" + dir;
         ro.progress = false;
@@ -279,6 +303,7 @@ int run_validation(const ValidateOptions& opt) {
       bool passed = rep.status == "completed";
       run["case"] = c->name;
       run["dir"] = rel;
+      if (!r.variant.empty()) run["variant"] = r.variant;
       run["sets"] = sets;
       run["reference_velocity"] = u_ref;
       run["rho0"] = rho0;
@@ -312,6 +337,44 @@ int run_validation(const ValidateOptions& opt) {
          << fmt(rep.wall_seconds) << " | " << fmt(run["particle_steps_per_second"].get<double>()) << " | " << errs << " | "
          << (passed ? "yes" : "**no**") << " |\n";
       ladder.emplace_back(resolution, rep.errors);
+    }
+    // APR comparisons: the APR (and coarse) run against the fine one
+    if (!c->ladder.empty() && !c->ladder.front().variant.empty()) {
+      nlohmann::json* fine = nullptr;
+      for (auto& run : j["runs"])
+        if (run["case"] == c->name && run.value("variant", "") == "fine") fine = &run;
+      if (fine && (*fine)["status"] == "completed") {
+        for (auto& run : j["runs"]) {
+          if (run["case"] != c->name || run.value("variant", "") == "fine") continue;
+          auto& e = run["errors"];
+          const auto& ef = (*fine)["errors"];
+          if (e.contains("velocity_l2_near_wall") && ef.contains("velocity_l2_near_wall"))
+            e["near_wall_error_over_fine"] = e["velocity_l2_near_wall"].get<double>() / ef["velocity_l2_near_wall"].get<double>();
+          e["wall_time_over_fine"] = run["wall_seconds"].get<double>() / (*fine)["wall_seconds"].get<double>();
+          // the last probe's pressure over time (probes.csv), relative L2 difference to the fine run's
+          const std::string pa = opt.out_dir + "/" + run["dir"].get<std::string>() + "/probes.csv";
+          const std::string pb = opt.out_dir + "/" + (*fine)["dir"].get<std::string>() + "/probes.csv";
+          std::vector<std::vector<double>> a, b;
+          if (fs::exists(pa) && fs::exists(pb)) {
+            a = reference::read_table(pa);
+            b = reference::read_table(pb);
+          }
+          if (!a.empty() && a.size() == b.size() && a.front().size() >= 6 && a.front().size() == b.front().size()) {
+            const std::size_t col = a.front().size() - 2 - 2;  // <probe>.pressure of the last probe (2D)
+            double num = 0, den = 0;
+            for (std::size_t k = 0; k < a.size(); ++k) {
+              num += (a[k][col] - b[k][col]) * (a[k][col] - b[k][col]);
+              den += b[k][col] * b[k][col];
+            }
+            if (den > 0) e["probe_pressure_difference_vs_fine"] = std::sqrt(num / den);
+          }
+          md << "\n" << c->name << " / " << run["variant"].get<std::string>() << " against fine:";
+          for (const char* k : {"near_wall_error_over_fine", "wall_time_over_fine", "probe_pressure_difference_vs_fine"})
+            if (e.contains(k)) md << " " << k << " " << fmt(e[k].get<double>()) << ";";
+          md << "\n";
+        }
+      }
+      continue;  // no observed order across an APR comparison
     }
     // observed order between the two finest rungs: log(e_coarse / e_fine) / log(res_fine / res_coarse)
     if (ladder.size() >= 2) {

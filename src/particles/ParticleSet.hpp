@@ -20,6 +20,7 @@ class ParticleSet {
   using Fields = std::tuple<field::Position, field::Velocity, field::Density, field::Pressure,
                             field::Mass, field::GlobalId, field::Acceleration, field::DensityRate,
                             field::DensityGradient, field::ShepardGamma, field::FreeSurface,
+                            field::AprLevel, field::AprBirthLevel, field::AprGuard, field::AprMother, field::AprParent,
                             field::StagePosition, field::StageVelocity, field::StageDensity,
                             field::StagePositionSum, field::StageVelocitySum, field::StageDensitySum>;
   static constexpr int dimension = D;

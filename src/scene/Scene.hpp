@@ -70,6 +70,27 @@ struct WaveGauge {
   double bottom = 0, top = 0;
 };
 
+// Adaptive particle refinement (thesis 5.4, docs/apr.md). A refinement zone is a
+// box; a box nested in another refines one level further (level = depth). A box is
+// static, translates with a prescribed velocity (with the boxes nested in it), or
+// is re-centred every `every` steps on the maximum of the pressure or the speed
+// inside its search region (with the boxes nested in it).
+constexpr int kMaxRefinementLevel = 6;   // levels 0 (coarse) .. 6
+constexpr int kMaxRefinementZones = 16;
+enum class ZoneMotion { Static, Translation, Criterion };
+enum class ZoneCriterion { Pressure, Speed };
+struct RefinementZone {
+  std::string name;
+  Box box;
+  int level = 1;    // depth: 1 for a top-level box
+  int parent = -1;  // index of the enclosing box, -1 at the top level
+  ZoneMotion motion = ZoneMotion::Static;
+  Vec3 velocity{0, 0, 0};  // translation, m/s
+  ZoneCriterion criterion = ZoneCriterion::Pressure;
+  Box search;              // criterion: where the maximum is sought
+  int every = 1;           // criterion: steps between re-centrings
+};
+
 struct Scene {
   std::string name;         // case name (output folder name)
   std::string source_file;  // the YAML file it came from
@@ -120,6 +141,14 @@ struct Scene {
   std::int64_t max_steps = -1;   // -1: no limit
   double damping_time = 0;       // s: initial relaxation, u *= exp(-dt / (damping_time / 10)) while t < damping_time
   std::vector<Probe> probes;
+  // adaptive particle refinement: empty = the uniform code path (no APR field, kernel or pass)
+  std::vector<RefinementZone> refinement_zones;
+  double refinement_transition = 1.0;  // width of the daughter-guard layer, in R of the coarser level (thesis: R_m)
+  int max_refinement_level() const {
+    int l = 0;
+    for (const RefinementZone& z : refinement_zones) l = l > z.level ? l : z.level;
+    return l;
+  }
   std::vector<WaveGauge> wave_gauges;
   Reference reference;
 

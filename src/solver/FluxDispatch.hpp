@@ -41,7 +41,7 @@ void run_flux(const FluxArgs<D>& a) {
   using Pack = Terms<T...>;
   FluxPass<D, Kernel, Pack> pass{a.list, a.box, Kernel(a.R), a.R * a.R, a.body, a.x, a.u, a.rho, a.P, a.m,
                                  a.du, a.drho, Pack(make_term<D, T>(a)...)};
-  pass.run(a.n);
+  pass.run(a.first, a.first + a.n);
 }
 
 template <int D, class Kernel, class... T>

@@ -25,6 +25,7 @@
 #include "particles/ParticleSet.hpp"
 #include "kernels/FluidRegion.hpp"
 #include "scene/Scene.hpp"
+#include "solver/AdaptiveRefinement.hpp"
 #include "solver/WallModel.hpp"
 
 namespace ondine {
@@ -121,6 +122,12 @@ class Simulation {
   // x of the leading edge of the fluid (max x + dx/2), for the dam-break front
   double front_position() const;
 
+  // adaptive particle refinement (only with refinement zones; docs/apr.md)
+  bool refinement_on() const { return apr_on_; }
+  const AdaptiveRefinement<D>& refinement() const { return apr_; }
+  // SPH particles (guards excluded) and guards on this rank
+  std::int64_t sph_particles() const;
+
  private:
   void fill(std::int64_t first, std::int64_t end);
   void load_checkpoint(const CheckpointSlice& restart);
@@ -135,12 +142,21 @@ class Simulation {
   void stage_update(double c_dt, double acc_weight, bool first);
   RungeKuttaViews<D> stage_views() const;
   void check_state(double dt);
+  // APR: the per-level derivative evaluation, the bookkeeping at a step start, the lists
+  void evaluate_levels();
+  void refinement_step_start();
+  void refinement_bookkeeping();
+  void rebuild_level_lists();
+  void update_free_surface_levels();
+  std::vector<ProbeSample> sample_levels(const std::vector<Vec3>& points) const;
+  void build_level_wall_cells();
+  const CellList<D>& wall_cells(int level) const { return level == 0 ? walls_.cells() : level_wall_cells_[level]; }
 
   Scene scene_;
   Communicator comm_;
   ParticleSet<D> p_;
   PeriodicBox<D> box_;
-  double R_, cutoff_;
+  double R_, cutoff_, skin_len_ = 0;
   double morris_factor_ = 1.0;  // kappa of kernels/MorrisLatticeFactor.hpp (Morris viscosity only)
   CellList<D> cells_;
   NeighbourList<D> list_;
@@ -167,6 +183,9 @@ class Simulation {
   std::int64_t wall_corrections_ = 0;  // this rank's impermeability corrections (kernels/WallImpermeability.hpp)
   bool list_valid_ = false;
   Diagnostics initial_;
+  AdaptiveRefinement<D> apr_;
+  bool apr_on_ = false;
+  std::vector<CellList<D>> level_wall_cells_;  // APR with walls: wall points binned at each level's radius
 };
 
 extern template class Simulation<2>;

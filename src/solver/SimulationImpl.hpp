@@ -8,6 +8,7 @@
 #include "kernels/DensityGradientPass.hpp"
 #include "kernels/MorrisLatticeFactor.hpp"
 #include "kernels/WallImpermeability.hpp"
+#include "kernels/apr/LevelSums.hpp"
 #include "kernels/EquationOfState.hpp"
 #include "kernels/FreeSurfacePass.hpp"
 #include "kernels/WallFluxPass.hpp"
@@ -46,7 +47,20 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
   R_ = scene.R();
   if (scene.viscous_term == ViscousTerm::Morris)
     morris_factor_ = with_kernel<D>(scene.kernel, R_, [&](auto W) { return morris_lattice_factor<D>(W, R_, scene.dx); });
-  cutoff_ = R_ + scene.neighbour_skin * scene.dx;
+  // with refinement zones the skin and the wall quadrature follow the finest spacing
+  apr_on_ = !scene.refinement_zones.empty();
+  const double dx_finest = scene.dx / std::ldexp(1.0, scene.max_refinement_level());
+  skin_len_ = scene.neighbour_skin * (apr_on_ ? dx_finest : scene.dx);
+  cutoff_ = R_ + skin_len_;
+  if (apr_on_) {
+    if (comm_.size() > 1)
+      throw std::invalid_argument(scene.source_file + ": key 'refinement': adaptive particle refinement runs on one MPI rank "
+                                  "only (not distributed yet); run it without mpirun, or remove the key 'refinement'");
+    if (restart)
+      throw std::invalid_argument(scene.source_file + ": key 'refinement': a run with refinement zones cannot restart from "
+                                  "a checkpoint yet (the APR fields are not checkpointed)");
+    if (scene_.wall_quadrature_spacing == 0) scene_.wall_quadrature_spacing = dx_finest / 4;
+  }
   for (int k = 0; k < D; ++k) {
     box_.lo[k] = scene.domain.min[k];
     box_.len[k] = scene.domain.max[k] - scene.domain.min[k];
@@ -80,7 +94,7 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
   if (free_surface_possible) p_.allocate(field::FreeSurface{});
   flux_ = with_kernel<D>(scene.kernel, R_, [&](auto W) { return select_flux<D, decltype(W)>(scene); });
   if (walls) {
-    walls_ = WallModel<D>(scene, box_, R_);
+    walls_ = WallModel<D>(scene_, box_, R_);
     region_.seg = walls_.segments();
     region_.behind = scene.dx;
     // closed walls as segment ranges (host loop over walls)
@@ -112,6 +126,13 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
     if (walls) remove_outside_fluid();
   }
   n_own_ = static_cast<int>(p_.size());
+  if (apr_on_) {
+    // every particle starts as a coarse SPH particle; one bookkeeping pass per
+    // level creates the daughters of each nested level in turn
+    apr_ = AdaptiveRefinement<D>(scene_, box_, skin_len_);
+    apr_.initialise(p_, static_cast<std::int64_t>(n_own_));
+    for (int l = 1; l < apr_.levels(); ++l) refinement_bookkeeping();
+  }
   if (!comm_.serial()) {
     // first decomposition: weighted by the particles in each cell
     decompose(false);
@@ -298,6 +319,7 @@ std::int64_t Simulation<D>::pair_count() const {
   const double R2 = R_ * R_;
   std::int64_t total = 0;
   if (!list_valid_) return 0;
+  if (apr_on_) return apr_.symmetric_list().total();  // L. pairs within R + skin
   Kokkos::parallel_reduce("ondine::PairCount", Kokkos::RangePolicy<ExecSpace>(0, n_own_),
                           KOKKOS_LAMBDA(const int i, std::int64_t& acc) {
                             const Vec<D> xi = load<D>(x, i);
@@ -316,7 +338,7 @@ void Simulation<D>::ensure_neighbours() {
     double d2max = 0;
     Kokkos::parallel_reduce("ondine::NeighbourList::displacement", Kokkos::RangePolicy<ExecSpace>(0, n_own_),
                             MaxDisplacement2<D>{box_, x, x_at_build_}, Kokkos::Max<double>(d2max));
-    const double half_skin = 0.5 * scene_.neighbour_skin * scene_.dx;
+    const double half_skin = 0.5 * skin_len_;
     if (comm_.max(d2max) < half_skin * half_skin) return;
   }
   rebuild_neighbours(true);
@@ -326,6 +348,10 @@ void Simulation<D>::ensure_neighbours() {
 // list for the owned ones; then the balance check, which may rebalance once.
 template <int D>
 void Simulation<D>::rebuild_neighbours(bool may_rebalance) {
+  if (apr_on_) {
+    rebuild_level_lists();
+    return;
+  }
   if (!comm_.serial()) {
     n_own_ = exchange_.migrate(p_, n_own_, orb_, box_, comm_);
     exchange_.build_halos(p_, n_own_, orb_, box_, comm_);
@@ -405,6 +431,10 @@ void Simulation<D>::reorder_by_cell() {
 
 template <int D>
 void Simulation<D>::evaluate() {
+  if (apr_on_) {
+    evaluate_levels();
+    return;
+  }
   ensure_neighbours();
   refresh_halos();
   const int n = n_own_, n_all = static_cast<int>(p_.size());
@@ -514,10 +544,29 @@ double Simulation<D>::time_step() const {
                           MaxNorm2<D, std::decay_t<decltype(du)>>{du}, Kokkos::Max<double>(a2max));
   cmax = comm_.max(cmax);
   a2max = comm_.max(a2max);
-  double dt = scene_.cfl_acoustic * R_ / cmax;
-  if (scene_.nu > 0) dt = std::min(dt, scene_.cfl_viscous * R_ * R_ / scene_.nu);
-  if (a2max > 0) dt = std::min(dt, scene_.cfl_force * std::sqrt(R_ / std::sqrt(a2max)));
-  if (!walls_.empty() && scene_.viscous_term != ViscousTerm::None) {
+  // one global step, bounded by the finest level that has SPH particles (with refinement zones)
+  double R = R_;
+  if (apr_on_)
+    for (int l = 0; l < apr_.levels(); ++l)
+      if (apr_.active_end(l) > apr_.first(l)) R = apr_.R(l);
+  double dt = scene_.cfl_acoustic * R / cmax;
+  if (scene_.nu > 0) dt = std::min(dt, scene_.cfl_viscous * R * R / scene_.nu);
+  if (a2max > 0) dt = std::min(dt, scene_.cfl_force * std::sqrt(R / std::sqrt(a2max)));
+  if (!walls_.empty() && scene_.viscous_term != ViscousTerm::None && apr_on_) {
+    for (int l = 0; l < apr_.levels(); ++l) {
+      if (apr_.active_end(l) == apr_.first(l)) continue;
+      double kmax = 0;
+      const double Rl = apr_.R(l);
+      with_kernel<D>(scene_.kernel, Rl, [&](auto W) {
+        Kokkos::parallel_reduce("ondine::TimeStep::wall_viscous", Kokkos::RangePolicy<ExecSpace>(apr_.first(l), apr_.active_end(l)),
+                                WallViscousStiffness<D, decltype(W)>{walls_.points(), wall_cells(l), W, Rl * Rl, scene_.nu,
+                                                                     0.05 * Rl, box_, p_.get(field::Position{}),
+                                                                     p_.get(field::ShepardGamma{})},
+                                Kokkos::Max<double>(kmax));
+      });
+      if (kmax > 0) dt = std::min(dt, 1.0 / kmax);
+    }
+  } else if (!walls_.empty() && scene_.viscous_term != ViscousTerm::None) {
     double kmax = 0;
     with_kernel<D>(scene_.kernel, R_, [&](auto W) {
       Kokkos::parallel_reduce("ondine::TimeStep::wall_viscous", Kokkos::RangePolicy<ExecSpace>(0, n),
@@ -561,6 +610,7 @@ void Simulation<D>::stage_update(double c_dt, double w, bool first) {
 template <int D>
 double Simulation<D>::step(double t_stop) {
   if (scene_.reorder_interval > 0 && steps_ % scene_.reorder_interval == 0) reorder_by_cell();
+  if (apr_on_) refinement_step_start();
   if (!p_.has(field::StagePosition{})) {
     p_.allocate(field::StagePosition{});
     p_.allocate(field::StageVelocity{});
@@ -718,6 +768,21 @@ Diagnostics Simulation<D>::diagnostics() const {
   Kokkos::parallel_reduce("ondine::Diagnostics::rho_max", Kokkos::RangePolicy<ExecSpace>(0, n),
                           KOKKOS_LAMBDA(const int i, double& mx) { if (rho(i) > mx) mx = rho(i); },
                           Kokkos::Max<double>(d.rho_max));
+  if (apr_on_) {
+    // with refinement zones the leaves carry the fluid: a mother's mass and
+    // momentum are its daughters' (passive mothers and daughter guards overlap)
+    apr::LeafSum<D> f{u, m, p_.get(field::AprMother{}), 0};
+    d.mass = 0;
+    Kokkos::parallel_reduce("ondine::Diagnostics::mass", Kokkos::RangePolicy<ExecSpace>(0, n), f, d.mass);
+    for (int k = 0; k < D; ++k) {
+      f.what = 1 + k;
+      d.momentum[k] = 0;
+      Kokkos::parallel_reduce("ondine::Diagnostics::momentum", Kokkos::RangePolicy<ExecSpace>(0, n), f, d.momentum[k]);
+    }
+    f.what = D + 1;
+    d.kinetic_energy = 0;
+    Kokkos::parallel_reduce("ondine::Diagnostics::kinetic_energy", Kokkos::RangePolicy<ExecSpace>(0, n), f, d.kinetic_energy);
+  }
   const auto box = box_;
   double hi[D];
   for (int k = 0; k < D; ++k) hi[k] = box.lo[k] + box.len[k];
@@ -763,6 +828,7 @@ std::vector<ProbeSample> Simulation<D>::sample_at(const std::vector<Vec3>& point
   const auto P = p_.get(field::Pressure{});
   const auto m = p_.get(field::Mass{});
   const auto box = box_;
+  if (apr_on_) return sample_levels(points);
   for (const Vec3& point : points) {
     Vec<D> xp;
     for (int k = 0; k < D; ++k) xp[k] = point[k];
@@ -884,6 +950,10 @@ void Simulation<D>::prepare_output() {
   if (!comm_.serial()) rebuild_neighbours(false);
   // the stored state's own pressure and Shepard factor (the flux passes left last-stage values)
   refresh_halos();
+  if (apr_on_) {
+    ensure_neighbours();
+    apr_.interpolate(p_, box_, true, walls_.segments());  // the guards of the stored state (5.24)
+  }
   const int n = static_cast<int>(p_.size());
   detail::with_eos<D>(scene_, [&](auto eos) {
     update_pressure<D>(eos, p_.get(field::Density{}), p_.get(field::Pressure{}), n);
@@ -894,6 +964,10 @@ void Simulation<D>::prepare_output() {
 
 template <int D>
 void Simulation<D>::update_free_surface() {
+  if (apr_on_) {
+    update_free_surface_levels();
+    return;
+  }
   if (!p_.has(field::FreeSurface{})) {
     if (!walls_.empty())
       ShepardGammaPass<D>{walls_.segments(), R_, box_, p_.get(field::Position{}), p_.get(field::ShepardGamma{})}.run(n_own_);
@@ -999,17 +1073,32 @@ std::map<std::string, double> Simulation<D>::errors() const {
     std::vector<double> table(m + 1);
     for (int k = 0; k <= m; ++k) table[k] = reference::poiseuille_startup(L * k / m, t_, L, F, scene_.nu);
     Kokkos::View<double*, Kokkos::HostSpace> tab(table.data(), m + 1);
-    double num = 0, den = 0;
+    double num = 0, den = 0, num_wall = 0, den_wall = 0;
+    // with refinement zones: the SPH particles only (guards are interpolated copies), each with its radius
+    Kokkos::View<int*, Kokkos::HostSpace> guard, birth;
+    if (apr_on_) {
+      guard = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.get(field::AprGuard{}));
+      birth = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.get(field::AprBirthLevel{}));
+    }
     // one pass on the host mirror: the error is a diagnostic at the end of a run
     for (int i = 0; i < n; ++i) {
+      if (apr_on_ && guard(i)) continue;
       const double y = std::min(std::max(hx(i, 1) - ref.origin[1], 0.0), L);
       const double f = y / L * m;
       const int k = std::min(static_cast<int>(f), m - 1);
       const double ue = table[k] + (f - k) * (table[k + 1] - table[k]);
       num += (hu(i, 0) - ue) * (hu(i, 0) - ue);
       den += ue * ue;
+      // the particles whose support is cut by a wall (thesis Table 5.3's boundary error)
+      const double Ri = apr_on_ ? apr_.R(birth(i)) : R_;
+      if (y < Ri || y > L - Ri) {
+        num_wall += (hu(i, 0) - ue) * (hu(i, 0) - ue);
+        den_wall += ue * ue;
+      }
     }
     e["velocity_l2"] = std::sqrt(comm_.sum(num) / comm_.sum(den));
+    den_wall = comm_.sum(den_wall);
+    if (den_wall > 0) e["velocity_l2_near_wall"] = std::sqrt(comm_.sum(num_wall) / den_wall);
   } else if (ref.kind == ReferenceKind::GhiaRe100 || ref.kind == ReferenceKind::GhiaRe1000) {
     // lid-driven cavity: RMS of (u - u_Ghia)/U on the vertical centreline and of (v - v_Ghia)/U on the
     // horizontal one, Shepard-interpolated at Ghia et al.'s points (the walls' own points excluded)
@@ -1060,3 +1149,5 @@ std::map<std::string, double> Simulation<D>::errors() const {
 }
 
 }  // namespace ondine
+
+#include "solver/SimulationLevels.hpp"

@@ -1,0 +1,261 @@
+#pragma once
+// Guard interpolation of APR (thesis 5.24; 5.23 is the same operator on a mother):
+// each guard i of level r takes its fields from the SPH particles j of every level
+// in its Lx row, with the daughters' radius R_f (a daughter guard's own, a mother
+// guard's daughters'),
+//   <phi>_i = sum_j w_j phi_j W(x_ij, R_f) / sum_k w_k W(x_ik, R_f),  w_j = m_j / rho_j.
+// Design choice (docs/apr.md): Shepard's estimate reproduces constants only. A
+// guard between a coarse and a fine region (unequal one-sided weights) gets an
+// O(R grad phi) error, and even a centred support smooths: O(R^2 phi'') (0.07 R^2
+// phi'' with Wendland C2). Guards are the boundary condition of each level, and
+// the two levels overlap by about R only, so such an error is amplified several
+// times in the solution (Poiseuille flow: a 1.3 % velocity error with linear
+// reconstruction, docs/apr.md). We therefore use moving least squares with the
+// weights w_j W_ij, of degree 2 where the support allows it:
+//   minimise sum_j w_j W_ij (phi_j - a . p(d_j))^2,  p(d) = (1, d, d_a d_b)/R powers, d_j = x_j - x_i,
+//   phi_i = a_0, grad phi_i = (a_1 .. a_D) / R,
+// exact for quadratic fields. Fallbacks, in order: degree 1 (exact for linear
+// fields) where the quadratic system is ill-conditioned, and plain Shepard (5.24)
+// where the support is strongly one-sided (the degree-1 Schur complement below a
+// quarter of m0: near a free surface, where extrapolation is not robust, as the
+// thesis notes). Guards with no source keep their fields. The density gradient
+// (read by delta-SPH and the walls of the SPH neighbours) comes from the same fit;
+// the SPH particles' own gradient is the renormalised one (2.42-2.44).
+#include "kernels/NeighbourList.hpp"
+#include "kernels/WallSet.hpp"
+#include "kernels/apr/RefinementZones.hpp"
+
+namespace ondine {
+
+namespace apr {
+
+// The interpolation is split in two passes. GuardWeights computes, for each guard,
+// the MLS shape functions psi_ij of its sources (value, and gradient components):
+// phi_i = sum_j psi_ij phi_j. They depend on positions only, and are recomputed
+// once per time step (at its first stage) and at each bookkeeping; GuardApply
+// evaluates the sums at every Runge-Kutta stage with the stage's fields. Within
+// a step the weights are those of the step's start: a locally affine motion of
+// guard and sources keeps them exact for linear fields (docs/apr.md).
+template <int D, class UnitKernel>
+struct GuardWeights {
+  static constexpr int NB = 1 + D + D * (D + 1) / 2;  // quadratic basis
+  NeighbourList<D> lx;
+  PeriodicBox<D> box;
+  RefinementZones<D> zones;
+  UnitKernel W1;  // the scene's kernel at R = 1: W(r, R) = W1(r / R) / R^D
+  field_view_t<field::Position, D> x;
+  field_view_t<field::Density, D> rho;
+  field_view_t<field::Mass, D> m;
+  field_view_t<field::AprBirthLevel, D> birth;
+  field_view_t<field::AprMother, D> mother;
+  Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> psi;  // (Lx entry, 1 + D): value, gradient
+
+  KOKKOS_INLINE_FUNCTION static void basis(const Vec<D>& e, double* p) {
+    p[0] = 1.0;
+    int k = 1;
+    for (int a = 0; a < D; ++a) p[k++] = e[a];
+    // centred on a typical second moment of the kernel (0.07 R^2), which keeps the
+    // quadratic columns from nearly repeating the constant one (conditioning)
+    for (int a = 0; a < D; ++a)
+      for (int b = a; b < D; ++b) p[k++] = e[a] * e[b] - (a == b ? 0.07 : 0.0);
+  }
+
+  // Cholesky factor of the symmetric positive definite A (its lower triangle is
+  // overwritten); false when a pivot falls below `tiny`.
+  KOKKOS_INLINE_FUNCTION static bool cholesky(double (&A)[NB][NB], double tiny) {
+    for (int j = 0; j < NB; ++j) {
+      double d = A[j][j];
+      for (int k = 0; k < j; ++k) d -= A[j][k] * A[j][k];
+      if (!(d > tiny)) return false;
+      d = kmath::sqrt(d);
+      A[j][j] = d;
+      for (int i = j + 1; i < NB; ++i) {
+        double v = A[i][j];
+        for (int k = 0; k < j; ++k) v -= A[i][k] * A[j][k];
+        A[i][j] = v / d;
+      }
+    }
+    return true;
+  }
+  // y <- (L L^T)^{-1} y, L in the lower triangle of A
+  KOKKOS_INLINE_FUNCTION static void substitute(const double (&L)[NB][NB], double (&y)[NB]) {
+    for (int i = 0; i < NB; ++i) {
+      double v = y[i];
+      for (int k = 0; k < i; ++k) v -= L[i][k] * y[k];
+      y[i] = v / L[i][i];
+    }
+    for (int i = NB - 1; i >= 0; --i) {
+      double v = y[i];
+      for (int k = i + 1; k < NB; ++k) v -= L[k][i] * y[k];
+      y[i] = v / L[i][i];
+    }
+  }
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    const int first = lx.offsets(i), nn = lx.num_neighbours(i);
+    if (nn == 0) return;  // an SPH particle (no Lx row)
+    // radius: the daughters' R_f for every guard, as the thesis prints it (5.24): a
+    // daughter guard's own radius, and a mother guard's daughters' (the quadratic fit
+    // needs no wider support, and a support of R_m would hold 2^D times more sources)
+    const double R = zones.R[birth(i) + (mother(i) == 1 ? 1 : 0)];
+    const double inv_R = 1.0 / R;
+    const Vec<D> xi = load<D>(x, i);
+    // moments in units of R: A = sum w p p^T (upper triangle)
+    double A[NB][NB];
+    int count = 0;
+    for (int a = 0; a < NB; ++a)
+      for (int b = 0; b < NB; ++b) A[a][b] = 0.0;
+    for (int n = 0; n < nn; ++n) {
+      const int j = lx.neighbours(first + n);
+      const Vec<D> e = inv_R * box.delta(load<D>(x, j), xi);  // (x_j - x_i) / R
+      const double q = kmath::sqrt(norm2(e));
+      if (q >= 1.0) continue;  // in the skin
+      const double w = m(j) / rho(j) * W1.value(q);  // the 1/R^D factor cancels
+      double p[NB];
+      basis(e, p);
+      for (int a = 0; a < NB; ++a) {
+        const double wp = w * p[a];
+        for (int b = a; b < NB; ++b) A[a][b] += wp * p[b];
+      }
+      ++count;
+    }
+    const double m0 = A[0][0];
+    for (int a = 0; a < NB; ++a)
+      for (int b = 0; b < a; ++b) A[a][b] = A[b][a];
+    // degree 1: the Schur complement s = m0 - m1^T M2^{-1} m1 tells a one-sided support
+    int degree = 0;
+    Mat<D> M2, B;
+    Vec<D> m1, Bm1 = Vec<D>::zero();
+    double s = m0;
+    for (int a = 0; a < D; ++a) {
+      m1[a] = A[0][1 + a];
+      for (int b = 0; b < D; ++b) M2.a[a][b] = A[1 + a][1 + b];
+    }
+    double tiny = 1e-12;
+    for (int a = 0; a < D; ++a) tiny *= m0;
+    if (m0 > 0.0 && invert(M2, B, tiny)) {
+      Bm1 = B * m1;
+      s = m0 - dot(m1, Bm1);
+      if (s > 0.25 * m0) degree = 1;
+    }
+    // degree 2: z0 = A^{-1} p(0) (value), z_a = A^{-1} e_{1+a} (gradient)
+    double z[D + 1][NB], diag[NB];
+    for (int a = 0; a < NB; ++a) diag[a] = A[a][a];  // the factorisation keeps A's strict upper triangle
+    // the quadratic fit needs twice as many sources as unknowns and no pivot below
+    // 1e-6 m0 (a full support's quadratic pivots are ~5e-3 m0): a nearly singular
+    // fit amplifies round-off (and noise) without bound
+    if (degree == 1 && count >= 2 * NB && cholesky(A, 1e-6 * m0)) {
+      degree = 2;
+      for (int c = 0; c <= D; ++c) {
+        double b[NB];
+        for (int a = 0; a < NB; ++a) b[a] = 0.0;
+        if (c == 0) basis(Vec<D>::zero(), b);
+        else b[c] = 1.0;
+        for (int a = 0; a < NB; ++a) z[c][a] = b[a];
+        substitute(A, z[c]);
+        // one step of iterative refinement: the normal equations' condition number
+        // (~1e6) would otherwise cost six digits of the weights
+        double r[NB];
+        for (int a = 0; a < NB; ++a) {
+          double v = b[a] - diag[a] * z[c][a];
+          for (int k = 0; k < NB; ++k)
+            if (k != a) v -= (k > a ? A[a][k] : A[k][a]) * z[c][k];
+          r[a] = v;
+        }
+        substitute(A, r);
+        for (int a = 0; a < NB; ++a) z[c][a] += r[a];
+      }
+    }
+    for (int n = 0; n < nn; ++n) {
+      const int j = lx.neighbours(first + n);
+      const Vec<D> e = inv_R * box.delta(load<D>(x, j), xi);
+      const double q = kmath::sqrt(norm2(e));
+      double v = 0.0;
+      Vec<D> g = Vec<D>::zero();
+      if (q < 1.0 && m0 > 0.0) {
+        const double w = m(j) / rho(j) * W1.value(q);
+        if (degree == 2) {
+          double p[NB];
+          basis(e, p);
+          for (int a = 0; a < NB; ++a) v += z[0][a] * p[a];
+          v *= w;
+          for (int c = 0; c < D; ++c) {
+            double t = 0.0;
+            for (int a = 0; a < NB; ++a) t += z[1 + c][a] * p[a];
+            g[c] = w * t * inv_R;
+          }
+        } else if (degree == 1) {
+          // phi = (f0 - (B m1) . f1) / s, grad = B (f1 - phi m1) / R
+          v = w * (1.0 - dot(Bm1, e)) / s;
+          g = inv_R * (B * (w * e - v * m1));
+        } else {
+          v = w / m0;  // Shepard (5.24)
+        }
+      }
+      psi(first + n, 0) = v;
+      for (int c = 0; c < D; ++c) psi(first + n, 1 + c) = g[c];
+    }
+  }
+};
+
+// phi_i = phi_ref + sum_j psi_ij (phi_j - phi_ref) for u and rho (and grad rho from
+// the gradient weights), phi_ref the first source's value: sum_j psi_ij = 1 holds
+// to round-off only, and rho ~ rho0 would otherwise lose digits.
+template <int D>
+struct GuardApply {
+  NeighbourList<D> lx;
+  Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> psi;
+  field_view_t<field::Velocity, D> u;
+  field_view_t<field::Density, D> rho;
+  field_view_t<field::DensityGradient, D> grad_rho;  // unallocated: not interpolated
+  // NFM walls (count 0 without): a guard is not integrated, so no wall term keeps it
+  // in the fluid; within dx_l / 2 of a wall segment the part of its interpolated
+  // velocity that points into the wall is removed (no penetration).
+  WallSegments<D> seg;
+  RefinementZones<D> zones;
+  field_view_t<field::Position, D> x;
+  field_view_t<field::AprBirthLevel, D> birth;
+
+  KOKKOS_INLINE_FUNCTION void no_penetration(const int i, Vec<D>& ui) const {
+    const Vec<D> xi = load<D>(x, i);
+    const double reach = 0.5 * zones.dx[birth(i)];
+    for (int k = 0; k < seg.count; ++k) {
+      const Vec<D> a = load<D>(seg.a, k), b = load<D>(seg.b, k), n = load<D>(seg.n_in, k);
+      const Vec<D> ab = b - a;
+      const double t = dot(xi - a, ab) / norm2(ab);
+      if (t < 0.0 || t > 1.0) continue;
+      const double d = dot(xi - a, n);  // > 0 on the fluid side
+      const double un = dot(ui, n);
+      if (d < reach && un < 0.0) ui -= un * n;
+    }
+  }
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    const int first = lx.offsets(i), nn = lx.num_neighbours(i);
+    if (nn == 0) return;  // a guard without sources keeps its fields
+    const int j0 = lx.neighbours(first);
+    const Vec<D> u0 = load<D>(u, j0);
+    const double r0 = rho(j0);
+    Vec<D> ui = Vec<D>::zero(), g = Vec<D>::zero();
+    double ri = 0.0, sum = 0.0;
+    for (int n = 0; n < nn; ++n) {
+      const int j = lx.neighbours(first + n);
+      const double v = psi(first + n, 0);
+      sum += v;
+      ui += v * (load<D>(u, j) - u0);
+      const double dr = rho(j) - r0;
+      ri += v * dr;
+      for (int c = 0; c < D; ++c) g[c] += psi(first + n, 1 + c) * dr;
+    }
+    if (sum == 0.0) return;  // no source within the radius
+    ui += u0;
+    no_penetration(i, ui);
+    store<D>(u, i, ui);
+    rho(i) = r0 + ri;
+    if (grad_rho.data() != nullptr) store<D>(grad_rho, i, g);
+  }
+};
+
+}  // namespace apr
+
+}  // namespace ondine

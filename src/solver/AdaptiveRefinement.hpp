@@ -1,0 +1,277 @@
+#pragma once
+// Host side of adaptive particle refinement (thesis 5.4; docs/apr.md): the zone
+// table and its motion, the refinement/derefinement bookkeeping (Kokkos passes of
+// kernels/apr/Refinement.hpp), the level ranges of the sorted particle set and the
+// two interaction lists L. and Lx (Algorithm 3), and the guard interpolation (5.24).
+// Exists only in a Simulation whose scene has refinement zones.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <Kokkos_Sort.hpp>
+#include <Kokkos_Timer.hpp>
+
+#include "kernels/CellList.hpp"
+#include "kernels/Permute.hpp"
+#include "kernels/apr/GuardInterpolation.hpp"
+#include "kernels/apr/InteractionLists.hpp"
+#include "kernels/apr/Refinement.hpp"
+#include "particles/ParticleSet.hpp"
+#include "scene/Scene.hpp"
+#include "solver/KernelDispatch.hpp"
+
+namespace ondine {
+
+template <int D>
+class AdaptiveRefinement {
+ public:
+  AdaptiveRefinement() = default;
+  AdaptiveRefinement(const Scene& s, const PeriodicBox<D>& box, double skin) : scene_zones_(s.refinement_zones), kernel_(s.kernel), skin_(skin) {
+    zones_.count = static_cast<int>(s.refinement_zones.size());
+    zones_.max_level = s.max_refinement_level();
+    zones_.box = box;
+    for (int l = 0; l < kAprMaxLevels; ++l) {
+      zones_.R[l] = s.R() / std::ldexp(1.0, l);
+      zones_.dx[l] = s.dx / std::ldexp(1.0, l);
+      zones_.layer[l] = l == 0 ? 0.0 : s.refinement_transition * zones_.R[l - 1];
+      zones_.passive[l] = zones_.R[l] + 2.0 * skin;
+    }
+    offset_.assign(scene_zones_.size(), Vec3{0, 0, 0});
+    place_zones();
+    levels_ = zones_.max_level + 1;
+    first_.assign(levels_, 0);
+    active_end_.assign(levels_, 0);
+    guard_end_.assign(levels_, 0);
+    end_.assign(levels_, 0);
+  }
+
+  bool active() const { return zones_.count > 0; }
+  int levels() const { return levels_; }
+  double R(int l) const { return zones_.R[l]; }
+  double dx(int l) const { return zones_.dx[l]; }
+  // particles of level l: SPH particles [first, active_end), guards [active_end,
+  // guard_end), passive guards [guard_end, end)
+  int first(int l) const { return first_[l]; }
+  int active_end(int l) const { return active_end_[l]; }
+  int guard_end(int l) const { return guard_end_[l]; }
+  int end(int l) const { return end_[l]; }
+  const NeighbourList<D>& symmetric_list() const { return l_dot_; }
+  const NeighbourList<D>& guard_list() const { return l_cross_; }
+  const RefinementZones<D>& zones() const { return zones_; }
+  std::int64_t refined() const { return refined_; }    // mothers refined so far
+  std::int64_t deleted() const { return deleted_; }    // daughters deleted so far
+  double interpolation_seconds() const { return interp_seconds_; }
+  // sum over all refinements of sum_f m_f u_f - m_m u_m (component a), and of m_m |u_m|
+  double momentum_change(int a) const { return momentum_change_[a]; }
+  double momentum_scale() const { return momentum_scale_; }
+  int guards() const {
+    int g = 0;
+    for (int l = 0; l < levels_; ++l) g += guard_end_[l] - active_end_[l];
+    return g;
+  }
+  int passive() const {
+    int g = 0;
+    for (int l = 0; l < levels_; ++l) g += end_[l] - guard_end_[l];
+    return g;
+  }
+
+  // The APR fields of a fresh particle set: every particle is a coarse SPH particle.
+  void initialise(ParticleSet<D>& p, std::int64_t global_count) {
+    p.allocate(field::AprLevel{});
+    p.allocate(field::AprBirthLevel{});
+    p.allocate(field::AprGuard{});
+    p.allocate(field::AprMother{});
+    Kokkos::deep_copy(p.allocate(field::AprParent{}), std::int64_t(-1));
+    next_id_ = global_count;
+  }
+
+  // Moves the zones to time t (translation) and, every `every` steps, re-centres a
+  // following zone on the maximum of |P| or |u| in its search region. Returns the
+  // largest zone displacement since the last bookkeeping (m).
+  template <class Maximum>
+  double move(double t, std::int64_t step, Maximum&& where_max) {
+    for (std::size_t z = 0; z < scene_zones_.size(); ++z) {
+      const RefinementZone& rz = scene_zones_[z];
+      if (rz.motion == ZoneMotion::Translation) {
+        for (int k = 0; k < D; ++k) offset_[z][k] = rz.velocity[k] * t;
+      } else if (rz.motion == ZoneMotion::Criterion && step % rz.every == 0) {
+        Vec3 at;
+        if (where_max(rz, at))
+          for (int k = 0; k < D; ++k) offset_[z][k] = at[k] - 0.5 * (rz.box.min[k] + rz.box.max[k]);
+      }
+    }
+    place_zones();
+    double moved = 0;
+    for (int z = 0; z < zones_.count; ++z)
+      for (int k = 0; k < D; ++k) moved = std::max(moved, std::abs(zones_.lo[z][k] - lo_at_update_[z][k]));
+    return moved;
+  }
+
+  // Refinement and derefinement (classify, prolongation, daughters), then the roles
+  // and the sort by (level, guard). `cells` must hold the current positions.
+  // Returns the new particle count.
+  int update(ParticleSet<D>& p, const CellList<D>& cells, const PeriodicBox<D>& box, int n) {
+    Kokkos::View<int*, MemSpace> action("ondine::APR::action", n), kept_index("ondine::APR::kept_index", n),
+        refine_index("ondine::APR::refine_index", n);
+    // the mother flags before this pass (a deleted mother takes its daughters along)
+    Kokkos::View<int*, MemSpace> was_mother("ondine::APR::was_mother", n);
+    Kokkos::deep_copy(was_mother, p.get(field::AprMother{}));
+    Kokkos::parallel_for("ondine::APR::classify", Kokkos::RangePolicy<ExecSpace>(0, n),
+                         apr::Classify<D>{zones_, p.get(field::Position{}), p.get(field::AprBirthLevel{}),
+                                          p.get(field::AprMother{}), action});
+    // derefinement (5.23): the daughters of each derefining (or deleted) mother, level by level
+    for (int l = 1; l < levels_; ++l) {
+      Kokkos::View<std::int64_t*, MemSpace> dying("ondine::APR::dying", n);
+      int count = 0;
+      Kokkos::parallel_scan("ondine::APR::dying", Kokkos::RangePolicy<ExecSpace>(0, n),
+                            apr::DyingScan{action, p.get(field::AprBirthLevel{}), was_mother, p.get(field::GlobalId{}), dying, l - 1},
+                            count);
+      if (count == 0) continue;
+      const auto ids = Kokkos::subview(dying, std::make_pair(0, count));
+      Kokkos::sort(ids);
+      Kokkos::parallel_for("ondine::APR::remove_daughters", Kokkos::RangePolicy<ExecSpace>(0, n),
+                           apr::DaughterRemoval{action, p.get(field::AprBirthLevel{}), p.get(field::AprParent{}), dying, l, count});
+    }
+    apr::ActionScan::value_type totals;
+    Kokkos::parallel_scan("ondine::APR::scan", Kokkos::RangePolicy<ExecSpace>(0, n),
+                          apr::ActionScan{action, kept_index, refine_index}, totals);
+    const int kept = totals.kept, nref = totals.refined;
+    deleted_ += n - kept;
+    refined_ += nref;
+    if (kept != n || nref > 0) {
+      const int nd = nref << D;
+      Kokkos::View<int*, MemSpace> order("ondine::APR::order", kept + nd), refining("ondine::APR::refining", nref);
+      Kokkos::parallel_for("ondine::APR::order", Kokkos::RangePolicy<ExecSpace>(0, n),
+                           apr::NewOrder<D>{action, kept_index, refine_index, order, refining, kept});
+      Kokkos::View<double* [D + 1][D], Kokkos::LayoutRight, MemSpace> grad("ondine::APR::prolongation_gradient", nref);
+      with_kernel<D>(kernel_, 1.0, [&](auto W1) {
+        Kokkos::parallel_for("ondine::APR::prolongation_gradient", Kokkos::RangePolicy<ExecSpace>(0, nref),
+                             apr::ProlongationGradient<D, decltype(W1)>{cells, box, zones_, W1, p.get(field::Position{}),
+                                                                       p.get(field::Velocity{}), p.get(field::Density{}),
+                                                                       p.get(field::Mass{}), p.get(field::AprBirthLevel{}),
+                                                                       refining, grad});
+      });
+      p.permute([&order](const auto& v) { return permuted(v, order); }, static_cast<std::size_t>(kept + nd));
+      Kokkos::parallel_for("ondine::APR::daughters", Kokkos::RangePolicy<ExecSpace>(0, nref),
+                           apr::DaughterFill<D>{zones_, box, refining, kept_index, grad, kept, next_id_,
+                                                p.get(field::Position{}), p.get(field::Velocity{}), p.get(field::Density{}),
+                                                p.get(field::Mass{}), p.get(field::GlobalId{}), p.get(field::AprBirthLevel{}),
+                                                p.get(field::AprMother{}), p.get(field::AprParent{})});
+      double dp[D + 1];
+      Kokkos::parallel_reduce("ondine::APR::family_momentum", Kokkos::RangePolicy<ExecSpace>(0, nref),
+                              apr::FamilyMomentum<D>{D + 1, refining, kept_index, kept, p.get(field::Velocity{}), p.get(field::Mass{})},
+                              dp);
+      for (int a = 0; a < D; ++a) momentum_change_[a] += dp[a];
+      momentum_scale_ += dp[D];
+      next_id_ += nd;
+      n = kept + nd;
+    }
+    sort_by_role(p, n);
+    for (int z = 0; z < zones_.count; ++z)
+      for (int k = 0; k < D; ++k) lo_at_update_[z][k] = zones_.lo[z][k];
+    return n;
+  }
+
+  // L. and Lx from a cell list of the current (sorted) positions.
+  void build_lists(const ParticleSet<D>& p, const CellList<D>& cells, const PeriodicBox<D>& box, int n) {
+    apr::LevelVisitor<D, false> dot{cells.grid, box, cells.cell_start, cells.sorted, p.get(field::Position{}),
+                                    p.get(field::AprBirthLevel{}), p.get(field::AprGuard{}), p.get(field::AprMother{}), {}};
+    for (int l = 0; l < kAprMaxLevels; ++l) dot.cut2[l] = (zones_.R[l] + skin_) * (zones_.R[l] + skin_);
+    apr::build_list<D, false>(l_dot_, dot, n, "SymmetricList");
+    apr::LevelVisitor<D, true> cross{cells.grid, box, cells.cell_start, cells.sorted, p.get(field::Position{}),
+                                     p.get(field::AprBirthLevel{}), p.get(field::AprGuard{}), p.get(field::AprMother{}), {}};
+    for (int l = 0; l < kAprMaxLevels; ++l) cross.cut2[l] = dot.cut2[l];
+    apr::build_list<D, true>(l_cross_, cross, n, "GuardList");
+    if (psi_.extent(0) < l_cross_.neighbours.extent(0))
+      psi_ = Kokkos::View<double**, Kokkos::LayoutRight, MemSpace>("ondine::APR::guard_weights", l_cross_.neighbours.extent(0), D + 1);
+    weights_valid_ = false;
+  }
+
+  // Guard interpolation (5.24) of the velocity and density (and density gradient),
+  // at the start of every Runge-Kutta stage, from the SPH particles of this stage;
+  // with `passive`, of the passive guards too (at a bookkeeping and before an output).
+  // The shape functions are recomputed when invalidated (a new step, new lists) and
+  // always with `passive`.
+  void interpolate(ParticleSet<D>& p, const PeriodicBox<D>& box, bool passive = false,
+                   const WallSegments<D>& walls = WallSegments<D>()) {
+    Kokkos::Timer timer;
+    if (passive || !weights_valid_) {
+      with_kernel<D>(kernel_, 1.0, [&](auto W1) {
+        apr::GuardWeights<D, decltype(W1)> f{l_cross_, box, zones_, W1, p.get(field::Position{}), p.get(field::Density{}),
+                                             p.get(field::Mass{}), p.get(field::AprBirthLevel{}), p.get(field::AprMother{}), psi_};
+        for (int l = 0; l < levels_; ++l) {
+          const int e = passive ? end_[l] : guard_end_[l];
+          if (e > active_end_[l])
+            Kokkos::parallel_for("ondine::APR::GuardWeights", Kokkos::RangePolicy<ExecSpace>(active_end_[l], e), f);
+        }
+      });
+      weights_valid_ = true;
+    }
+    apr::GuardApply<D> f{l_cross_, psi_, p.get(field::Velocity{}), p.get(field::Density{}), field_view_t<field::DensityGradient, D>(),
+                         walls, zones_, p.get(field::Position{}), p.get(field::AprBirthLevel{})};
+    if (p.has(field::DensityGradient{})) f.grad_rho = p.get(field::DensityGradient{});
+    for (int l = 0; l < levels_; ++l) {
+      const int e = passive ? end_[l] : guard_end_[l];
+      if (e > active_end_[l])
+        Kokkos::parallel_for("ondine::APR::GuardInterpolation", Kokkos::RangePolicy<ExecSpace>(active_end_[l], e), f);
+    }
+    Kokkos::fence();
+    interp_seconds_ += timer.seconds();
+  }
+  // positions moved (a new step): the shape functions are recomputed at the next interpolation
+  void invalidate_weights() { weights_valid_ = false; }
+
+ private:
+  void sort_by_role(ParticleSet<D>& p, int n) {
+    Kokkos::View<int*, MemSpace> key("ondine::APR::key", n), order("ondine::APR::sort_order", n);
+    Kokkos::parallel_for("ondine::APR::roles", Kokkos::RangePolicy<ExecSpace>(0, n),
+                         apr::Roles<D>{zones_, p.get(field::Position{}), p.get(field::AprBirthLevel{}), p.get(field::AprMother{}),
+                                       p.get(field::AprGuard{}), p.get(field::AprLevel{}), key});
+    int base = 0;
+    for (int l = 0; l < levels_; ++l)
+      for (int g = 0; g < 3; ++g) {
+        int count = 0;
+        Kokkos::parallel_scan("ondine::APR::sort", Kokkos::RangePolicy<ExecSpace>(0, n), apr::KeyScatter{key, order, 3 * l + g, base},
+                              count);
+        if (g == 0) first_[l] = base;
+        base += count;
+        (g == 0 ? active_end_[l] : g == 1 ? guard_end_[l] : end_[l]) = base;
+      }
+    p.permute([&order](const auto& v) { return permuted(v, order); }, static_cast<std::size_t>(n));
+    // guards are never integrated: their rates stay zero (the flux passes cover SPH particles only)
+    for (int l = 0; l < levels_; ++l)
+      if (end_[l] > active_end_[l])
+        Kokkos::parallel_for("ondine::APR::zero_guard_rates", Kokkos::RangePolicy<ExecSpace>(active_end_[l], end_[l]),
+                             apr::ZeroGuardRates<D>{p.get(field::Acceleration{}), p.get(field::DensityRate{})});
+  }
+
+  // zone boxes at their current offsets (a nested zone moves with its outermost parent)
+  void place_zones() {
+    for (std::size_t z = 0; z < scene_zones_.size(); ++z) {
+      std::size_t top = z;
+      while (scene_zones_[top].parent >= 0) top = static_cast<std::size_t>(scene_zones_[top].parent);
+      zones_.level[z] = scene_zones_[z].level;
+      for (int k = 0; k < D; ++k) {
+        zones_.lo[z][k] = scene_zones_[z].box.min[k] + offset_[top][k];
+        zones_.hi[z][k] = scene_zones_[z].box.max[k] + offset_[top][k];
+      }
+    }
+  }
+
+  std::vector<RefinementZone> scene_zones_;
+  std::vector<Vec3> offset_;
+  double lo_at_update_[kAprMaxZones][D] = {};
+  RefinementZones<D> zones_;
+  KernelType kernel_ = KernelType::WendlandC2;
+  double skin_ = 0;
+  int levels_ = 1;
+  std::vector<int> first_, active_end_, guard_end_, end_;
+  NeighbourList<D> l_dot_, l_cross_;
+  Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> psi_;  // guard shape functions (Lx entry, value + gradient)
+  bool weights_valid_ = false;
+  std::int64_t next_id_ = 0, refined_ = 0, deleted_ = 0;
+  double interp_seconds_ = 0;
+  double momentum_change_[D] = {}, momentum_scale_ = 0;
+};
+
+}  // namespace ondine

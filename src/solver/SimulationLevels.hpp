@@ -1,0 +1,238 @@
+#pragma once
+// Simulation<D> members used only with refinement zones (adaptive particle
+// refinement, thesis 5.4; docs/apr.md); included by SimulationImpl.hpp. A scene
+// without zones never reaches them. Particles are sorted by level, each level's
+// SPH particles first, then its guards; every existing pass runs once per level
+// over that level's SPH particles, with the level's radius R_l = R_0 / 2^l and
+// the symmetric list L. (so its pair loop is the uniform one, with no test).
+#include "kernels/apr/LevelSums.hpp"
+
+namespace ondine {
+
+template <int D>
+void Simulation<D>::refinement_bookkeeping() {
+  cells_.build(local_grid_, p_.get(field::Position{}), n_own_);  // for the prolongation gradient
+  n_own_ = apr_.update(p_, cells_, box_, n_own_);
+  list_valid_ = false;
+  rebuild_level_lists();
+  apr_.interpolate(p_, box_, true, walls_.segments());  // passive guards: once per bookkeeping
+}
+
+template <int D>
+void Simulation<D>::rebuild_level_lists() {
+  const auto x = p_.get(field::Position{});
+  cells_.build(local_grid_, x, n_own_);
+  apr_.build_lists(p_, cells_, box_, n_own_);
+  if (scene_.neighbour_skin > 0) {
+    if (x_at_build_.extent(0) != x.extent(0))
+      x_at_build_ = field_view_t<field::Position, D>("ondine::NeighbourList::x_at_build", x.extent(0));
+    Kokkos::deep_copy(x_at_build_, x);
+  }
+  list_valid_ = true;
+  ++builds_;
+}
+
+// At the start of a step: the zones at time t (moving, or re-centred on their
+// criterion), then the bookkeeping whenever the lists have to be rebuilt anyway
+// (Verlet criterion, a reordering, or zones moved by more than half the skin).
+template <int D>
+void Simulation<D>::refinement_step_start() {
+  const auto x = p_.get(field::Position{});
+  const auto u = p_.get(field::Velocity{});
+  const auto P = p_.get(field::Pressure{});
+  const auto guard = p_.get(field::AprGuard{});
+  const int n = n_own_;
+  apr_.invalidate_weights();  // positions moved since the last step
+  const double moved = apr_.move(t_, steps_, [&](const RefinementZone& z, Vec3& at) {
+    apr::MaxInBox<D> f{{}, {}, z.criterion == ZoneCriterion::Speed, x, u, P, guard};
+    for (int k = 0; k < D; ++k) {
+      f.lo[k] = z.search.min[k];
+      f.hi[k] = z.search.max[k];
+    }
+    typename Kokkos::MaxLoc<double, int>::value_type best;
+    Kokkos::parallel_reduce("ondine::APR::zone_criterion", Kokkos::RangePolicy<ExecSpace>(0, n), f,
+                            Kokkos::MaxLoc<double, int>(best));
+    if (!(best.val > 0)) return false;
+    auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), Kokkos::subview(x, best.loc, Kokkos::ALL));
+    for (int k = 0; k < D; ++k) at[k] = h(k);
+    return true;
+  });
+  bool rebuild = !list_valid_ || moved > 0.5 * skin_len_;
+  if (!rebuild) {
+    double d2max = 0;
+    Kokkos::parallel_reduce("ondine::NeighbourList::displacement", Kokkos::RangePolicy<ExecSpace>(0, n),
+                            MaxDisplacement2<D>{box_, x, x_at_build_}, Kokkos::Max<double>(d2max));
+    rebuild = d2max >= 0.25 * skin_len_ * skin_len_;
+  }
+  if (rebuild) refinement_bookkeeping();
+}
+
+template <int D>
+void Simulation<D>::evaluate_levels() {
+  ensure_neighbours();  // lists only: roles change at a step start (refinement_step_start)
+  const int n = n_own_;
+  if (!walls_.empty()) update_walls(stage_time_);
+  apr_.interpolate(p_, box_, false, walls_.segments());  // guards from this stage's SPH particles (5.24)
+  FluxArgs<D> a;
+  a.list = apr_.symmetric_list();
+  a.box = box_;
+  for (int k = 0; k < D; ++k) a.body[k] = scene_.gravity[k] + scene_.body_force[k];
+  a.x = p_.get(field::Position{});
+  a.u = p_.get(field::Velocity{});
+  a.rho = p_.get(field::Density{});
+  a.P = p_.get(field::Pressure{});
+  a.m = p_.get(field::Mass{});
+  a.du = p_.get(field::Acceleration{});
+  a.drho = p_.get(field::DensityRate{});
+  // as in evaluate(): the lattice factor scales the plain Morris term; with no-slip walls the
+  // consistent Laplacian's weights (kernels/ConsistentLaplacian.hpp) are solved per level
+  const bool morris_walls = !walls_.empty() && scene_.viscous_term == ViscousTerm::Morris && has_no_slip_wall(scene_);
+  a.nu = scene_.viscous_term == ViscousTerm::Morris && !has_no_slip_wall(scene_) ? scene_.nu * morris_factor_ : scene_.nu;
+  if (morris_walls && static_cast<int>(laplacian_weights_.extent(0)) < n)
+    laplacian_weights_ = LaplacianWeightView<D>("ondine::NFM::laplacian_weights", n + n / 8 + 16);
+  if (morris_walls) a.laplacian_weights = laplacian_weights_;
+  detail::with_eos<D>(scene_, [&](auto eos) { update_pressure<D>(eos, a.rho, a.P, n); });
+  if (scene_.background_pressure) {
+    double pmin = 0;
+    Kokkos::parallel_reduce("ondine::BackgroundPressure::min", Kokkos::RangePolicy<ExecSpace>(0, n), apr::MinOf{a.P},
+                            Kokkos::Min<double>(pmin));
+    a.P_min = pmin < 0 ? -pmin : 0.0;
+  }
+  const bool walls = !walls_.empty();
+  if (walls) {
+    update_walls(stage_time_);
+    if (walls_.moving() || level_wall_cells_.empty()) build_level_wall_cells();
+  }
+  const bool gradient = scene_.delta_sph > 0 || walls;
+  if (gradient) a.grad_rho = p_.get(field::DensityGradient{});
+  for (int l = 0; l < apr_.levels(); ++l) {
+    const int b = apr_.first(l), e = apr_.active_end(l);
+    if (e == b) continue;
+    const double Rl = apr_.R(l);
+    if (walls)
+      Kokkos::parallel_for("ondine::NFM::ShepardGamma", Kokkos::RangePolicy<ExecSpace>(b, e),
+                           ShepardGammaPass<D>{walls_.segments(), Rl, box_, a.x, p_.get(field::ShepardGamma{})});
+    if (gradient)
+      with_kernel<D>(scene_.kernel, Rl, [&](auto W) {
+        if (morris_walls)
+          Kokkos::parallel_for("ondine::DensityGradient+consistent_laplacian", Kokkos::RangePolicy<ExecSpace>(b, e),
+                               DensityGradientPass<D, decltype(W), true>{
+                                   a.list, box_, W, Rl * Rl, a.x, a.rho, a.m, a.grad_rho,
+                                   {walls_.points(), wall_cells(l), 0.05 * Rl, morris_factor_, p_.get(field::ShepardGamma{}),
+                                    laplacian_weights_}});
+        else
+          Kokkos::parallel_for("ondine::DensityGradient", Kokkos::RangePolicy<ExecSpace>(b, e),
+                               DensityGradientPass<D, decltype(W)>{a.list, box_, W, Rl * Rl, a.x, a.rho, a.m, a.grad_rho});
+      });
+  }
+  // the guards' density gradient came with their interpolation (GuardInterpolation.hpp)
+  const double eos_gamma = scene_.eos == EosLaw::Tait ? scene_.tait_gamma : 1.0;
+  for (int l = 0; l < apr_.levels(); ++l) {
+    const int b = apr_.first(l), e = apr_.active_end(l);
+    if (e == b) continue;
+    const double Rl = apr_.R(l);
+    a.first = b;
+    a.n = e - b;
+    a.R = Rl;
+    a.delta_coeff = scene_.delta_sph * scene_.c0 * Rl;
+    a.av_alpha_R_c0 = scene_.artificial_viscosity * Rl * scene_.c0;
+    flux_(a);
+    if (!walls) continue;
+    with_kernel<D>(scene_.kernel, Rl, [&](auto W) {
+      const WallEos weos{scene_.rho0, scene_.c0, eos_gamma};
+      if (morris_walls)
+        Kokkos::parallel_for("ondine::NFM::WallFlux", Kokkos::RangePolicy<ExecSpace>(b, e),
+                             WallFluxPass<D, decltype(W), true, true>{walls_.points(), wall_cells(l), W, Rl * Rl, a.body, scene_.nu, weos,
+                                                                      0.05 * Rl, box_, a.P_min, a.x, a.u, a.rho, a.P, a.grad_rho,
+                                                                      p_.get(field::ShepardGamma{}), a.du, a.drho, laplacian_weights_});
+      else if (scene_.viscous_term != ViscousTerm::None)
+        Kokkos::parallel_for("ondine::NFM::WallFlux", Kokkos::RangePolicy<ExecSpace>(b, e),
+                             WallFluxPass<D, decltype(W), true, false>{walls_.points(), wall_cells(l), W, Rl * Rl, a.body, scene_.nu, weos,
+                                                                       0.05 * Rl, box_, a.P_min, a.x, a.u, a.rho, a.P, a.grad_rho,
+                                                                       p_.get(field::ShepardGamma{}), a.du, a.drho, {}});
+      else
+        Kokkos::parallel_for("ondine::NFM::WallFlux", Kokkos::RangePolicy<ExecSpace>(b, e),
+                             WallFluxPass<D, decltype(W), false, false>{walls_.points(), wall_cells(l), W, Rl * Rl, a.body, scene_.nu, weos,
+                                                                        0.05 * Rl, box_, a.P_min, a.x, a.u, a.rho, a.P, a.grad_rho,
+                                                                        p_.get(field::ShepardGamma{}), a.du, a.drho, {}});
+    });
+  }
+}
+
+// Cell lists of the wall points with cells of level l's radius (l >= 1): a fine
+// particle then visits the wall points of its own neighbourhood, not of the coarse one.
+template <int D>
+void Simulation<D>::build_level_wall_cells() {
+  level_wall_cells_.resize(apr_.levels());
+  for (int l = 1; l < apr_.levels(); ++l)
+    level_wall_cells_[l].build(make_cell_grid(box_, apr_.R(l)), walls_.points().x, walls_.points().count);
+}
+
+template <int D>
+void Simulation<D>::update_free_surface_levels() {
+  ensure_neighbours();
+  const bool walls = !walls_.empty();
+  if (walls && level_wall_cells_.empty()) build_level_wall_cells();
+  for (int l = 0; l < apr_.levels(); ++l) {
+    const int b = apr_.first(l), e = apr_.active_end(l);
+    if (e == b) continue;
+    const double Rl = apr_.R(l);
+    if (walls)
+      Kokkos::parallel_for("ondine::NFM::ShepardGamma", Kokkos::RangePolicy<ExecSpace>(b, apr_.end(l)),
+                           ShepardGammaPass<D>{walls_.segments(), Rl, box_, p_.get(field::Position{}), p_.get(field::ShepardGamma{})});
+    if (!p_.has(field::FreeSurface{})) continue;
+    with_kernel<D>(scene_.kernel, Rl, [&](auto W) {
+      using K = decltype(W);
+      if (!walls)
+        Kokkos::parallel_for("ondine::FreeSurface", Kokkos::RangePolicy<ExecSpace>(b, e),
+                             FreeSurfacePass<D, K, false>{apr_.symmetric_list(), box_, W, Rl, Rl * Rl, walls_.points(), walls_.cells(),
+                                                          p_.get(field::Position{}), p_.get(field::Density{}), p_.get(field::Mass{}),
+                                                          field_view_t<field::ShepardGamma, D>(), p_.get(field::FreeSurface{})});
+      else
+        Kokkos::parallel_for("ondine::FreeSurface", Kokkos::RangePolicy<ExecSpace>(b, e),
+                             FreeSurfacePass<D, K, true>{apr_.symmetric_list(), box_, W, Rl, Rl * Rl, walls_.points(), wall_cells(l),
+                                                         p_.get(field::Position{}), p_.get(field::Density{}), p_.get(field::Mass{}),
+                                                         p_.get(field::ShepardGamma{}), p_.get(field::FreeSurface{})});
+    });
+  }
+}
+
+// Probes with refinement zones: Shepard sums over the SPH particles, each with its level's radius.
+template <int D>
+std::vector<ProbeSample> Simulation<D>::sample_levels(const std::vector<Vec3>& points) const {
+  std::vector<ProbeSample> out;
+  for (const Vec3& point : points) {
+    ProbeSample s;
+    with_kernel<D>(scene_.kernel, 1.0, [&](auto W1) {
+      apr::ProbeSum<D, decltype(W1)> f{apr_.zones(), W1, Vec<D>::zero(), p_.get(field::Position{}), p_.get(field::Velocity{}),
+                                       p_.get(field::Density{}), p_.get(field::Pressure{}), p_.get(field::Mass{}),
+                                       p_.get(field::AprBirthLevel{}), p_.get(field::AprGuard{}), 0};
+      for (int k = 0; k < D; ++k) f.xp[k] = point[k];
+      auto sum = [&](int what) {
+        f.what = what;
+        double acc = 0;
+        Kokkos::parallel_reduce("ondine::Probe", Kokkos::RangePolicy<ExecSpace>(0, n_own_), f, acc);
+        return acc;
+      };
+      s.shepard = sum(0);
+      if (s.shepard > 0) {
+        s.pressure = sum(1) / s.shepard;
+        s.density = sum(2) / s.shepard;
+        for (int k = 0; k < D; ++k) s.velocity[k] = sum(3 + k) / s.shepard;
+      }
+    });
+    out.push_back(s);
+  }
+  return out;
+}
+
+template <int D>
+std::int64_t Simulation<D>::sph_particles() const {
+  if (!apr_on_) return n_own_;
+  long g = 0;
+  Kokkos::parallel_reduce("ondine::APR::count_guards", Kokkos::RangePolicy<ExecSpace>(0, n_own_),
+                          apr::CountGuards{p_.get(field::AprGuard{})}, g);
+  return n_own_ - g;
+}
+
+}  // namespace ondine

@@ -1,0 +1,382 @@
+// Adaptive particle refinement (thesis 5.4; docs/apr.md): conservation through
+// refinement and derefinement, exactness of the guard interpolation on linear
+// fields, a uniform flow crossing a refinement box, and the structure of the
+// interaction lists (no symmetric pair with two radii).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "test_helpers.hpp"
+
+using namespace ondine;
+
+namespace {
+
+// A periodic channel 0.6 x 0.4 m (dx 0.02 m) of fluid moving at `speed` along x,
+// with one static refinement box in the middle (or none), linear EOS with a
+// background pressure so that a pressure-gradient error would show.
+Scene uniform_flow_scene(double speed, bool zone, const std::string& extra_scheme = "") {
+  std::string y =
+      "dimension: 2\n"
+      "domain: {min: [0, 0], max: [0.6, 0.4], periodic: [true, true]}\n"
+      "fluid: {rho0: 1000, sound_speed: 10, eos: {law: linear, background_pressure: 2000}}\n"
+      "discretisation: {dx: 0.02, R_over_dx: 3}\n"
+      "fluid_blocks: [{min: [0, 0], max: [0.6, 0.4], velocity: [" + std::to_string(speed) + ", 0]}]\n"
+      "scheme: {time_integrator: rk4" + extra_scheme + "}\n"
+      "time: {duration: 1, output_interval: 1}\n";
+  if (zone) y += "refinement: {zones: [{name: box, min: [0.2, 0.12], max: [0.35, 0.28]}]}\n";
+  return parse_case(y, "apr_test.yaml");
+}
+
+struct HostState {
+  Kokkos::View<double* [2], Kokkos::LayoutLeft, Kokkos::HostSpace> x, u;
+  Kokkos::View<double*, Kokkos::HostSpace> rho, P, m;
+  Kokkos::View<int*, Kokkos::HostSpace> guard, birth, mother;
+};
+
+HostState host_state(const Simulation<2>& sim) {
+  const auto& p = sim.particles();
+  HostState h;
+  h.x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Position{}));
+  h.u = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Velocity{}));
+  h.rho = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Density{}));
+  h.P = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Pressure{}));
+  h.m = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Mass{}));
+  h.guard = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::AprGuard{}));
+  h.birth = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::AprBirthLevel{}));
+  h.mother = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::AprMother{}));
+  return h;
+}
+
+}  // namespace
+
+TEST_CASE("APR refinement conserves mass exactly and momentum to round-off (prolongation 5.22)", "[apr]") {
+  // a Taylor-Green velocity field, so that the prolongation gradient is not zero
+  const std::string y =
+      "dimension: 2\n"
+      "domain: {min: [0, 0], max: [0.4, 0.4], periodic: [true, true]}\n"
+      "fluid: {rho0: 1000, sound_speed: 10}\n"
+      "discretisation: {dx: 0.02, R_over_dx: 3}\n"
+      "fluid_blocks: [{min: [0, 0], max: [0.4, 0.4], velocity: {taylor_green: {amplitude: 1.0, wavelength: 0.4}}}]\n"
+      "scheme: {time_integrator: rk4}\n"
+      "time: {duration: 1, output_interval: 1}\n";
+  const Scene coarse = parse_case(y, "tg.yaml");
+  const Scene refined = parse_case(y + "refinement: {zones: [{name: box, min: [0.1, 0.1], max: [0.22, 0.3]}]}\n", "tg.yaml");
+  Simulation<2> a(coarse), b(refined);
+  const Diagnostics da = a.diagnostics(), db = b.diagnostics();
+  REQUIRE(b.refinement().refined() > 0);
+  // the daughters' velocities differ from their mothers' (a non-zero prolongation gradient)
+  const HostState h = host_state(b);
+  double spread = 0, mass_daughters = 0, mass_mothers = 0;
+  for (std::size_t i = 0; i < b.particles().size(); ++i) {
+    if (h.birth(i) == 1) mass_daughters += h.m(i);
+    if (h.mother(i) == 1) mass_mothers += h.m(i);
+  }
+  for (std::size_t i = 0; i < b.particles().size(); ++i)
+    if (h.birth(i) == 1) spread = std::max(spread, std::abs(h.u(i, 0)));
+  // the momentum change of the refinement itself (before the guards are interpolated):
+  // sum_f m_f u_f - m_m u_m over the families, zero up to round-off with the linear
+  // prolongation (5.22) since the daughters' offsets sum to zero
+  const double dpx = b.refinement().momentum_change(0), dpy = b.refinement().momentum_change(1);
+  const double scale = b.refinement().momentum_scale();
+  std::printf("APR refinement: %lld mothers -> %zu particles; leaf mass %.17g vs uniform %.17g (rel %.2e); "
+              "daughters' mass %.17g, mothers' %.17g; momentum change of the refinements (%.3e, %.3e) kg m/s "
+              "of sum m_m |u_m| = %.3e\n",
+              static_cast<long long>(b.refinement().refined()), b.particles().size(), db.mass, da.mass,
+              std::abs(db.mass - da.mass) / da.mass, mass_daughters, mass_mothers, dpx, dpy, scale);
+  CHECK(spread > 0.1);
+  CHECK(std::abs(db.mass - da.mass) <= 1e-12 * da.mass);
+  CHECK(std::abs(mass_daughters - mass_mothers) <= 1e-14 * mass_mothers);  // m_m / 4 is exact; the sums' order differs
+  CHECK(scale > 1.0);
+  CHECK(std::abs(dpx) <= 1e-12 * scale);
+  CHECK(std::abs(dpy) <= 1e-12 * scale);
+}
+
+TEST_CASE("APR: mass is conserved to 1e-12 while a uniform flow is refined and derefined", "[apr]") {
+  Simulation<2> sim(uniform_flow_scene(1.0, true));
+  const double m0 = sim.diagnostics().mass;
+  double worst = 0;
+  while (sim.time() < 0.36) {  // the fluid crosses the box and its layers (0.27 m) and leaves it
+    sim.step(1.0);
+    worst = std::max(worst, std::abs(sim.diagnostics().mass - m0) / m0);
+  }
+  std::printf("APR uniform flow: %lld refinements, %lld daughters deleted, %lld steps, worst leaf-mass drift %.2e\n",
+              static_cast<long long>(sim.refinement().refined()), static_cast<long long>(sim.refinement().deleted()),
+              static_cast<long long>(sim.steps()), worst);
+  CHECK(sim.refinement().refined() > 100);  // mothers were refined while the run went on ...
+  CHECK(sim.refinement().deleted() > 400);  // ... and daughters were removed
+  CHECK(worst <= 1e-12);
+}
+
+TEST_CASE("APR: a uniform flow crossing a refinement box stays uniform", "[apr]") {
+  const double U = 1.0, rho0 = 1000.0;
+  Simulation<2> sim(uniform_flow_scene(U, true, ", delta_sph: 0.1"));
+  const double q = 0.5 * rho0 * U * U;  // dynamic pressure
+  double du_max = 0, dP_max = 0;
+  const double P0 = 2000.0;  // background pressure of the linear EOS at rho0
+  while (sim.time() < 0.36) {
+    sim.step(1.0);
+    if (sim.steps() % 10 != 0) continue;
+    sim.prepare_output();
+    const HostState h = host_state(sim);
+    for (std::size_t i = 0; i < sim.particles().size(); ++i) {
+      if (h.guard(i)) continue;
+      du_max = std::max(du_max, std::hypot(h.u(i, 0) - U, h.u(i, 1)));
+      dP_max = std::max(dP_max, std::abs(h.P(i) - P0));
+    }
+  }
+  std::printf("APR uniform flow: max |u - U| rho0 U / q = %.2e, max |P - P0| / q = %.2e (limit 1e-3)\n", du_max * rho0 * U / q,
+              dP_max / q);
+  CHECK(sim.refinement().refined() > 100);
+  CHECK(du_max * rho0 * U < 1e-3 * q);
+  CHECK(dP_max < 1e-3 * q);
+}
+
+TEST_CASE("APR guard interpolation (5.24) reproduces a linear field inside a full support", "[apr]") {
+  // a block of fluid with a free surface all round (no walls), a refinement box in its middle
+  const std::string y =
+      "dimension: 2\n"
+      "domain: {min: [-0.1, -0.1], max: [0.7, 0.5]}\n"
+      "fluid: {rho0: 1000, sound_speed: 10}\n"
+      "discretisation: {dx: 0.02, R_over_dx: 3}\n"
+      "fluid_blocks: [{min: [0, 0], max: [0.6, 0.4]}]\n"
+      "scheme: {time_integrator: rk4, delta_sph: 0.1}\n"
+      "time: {duration: 1, output_interval: 1}\n"
+      "refinement: {zones: [{name: box, min: [0.2, 0.12], max: [0.38, 0.28]}]}\n";
+  Simulation<2> sim(parse_case(y, "linear.yaml"));
+  // jitter the positions (a lattice would make even plain Shepard nearly exact) and
+  // set u = a + B x, rho = rho0 + g . x everywhere; then one evaluation interpolates the guards
+  auto& p = sim.particles();
+  const std::size_t n = p.size();
+  auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Position{}));
+  auto hu = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Velocity{}));
+  auto hr = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Density{}));
+  auto hb = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::AprBirthLevel{}));
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> s(-1, 1);
+  auto ue = [](double x, double y) { return 0.3 + 1.5 * x - 0.7 * y; };
+  auto ve = [](double x, double y) { return -0.2 + 0.4 * x + 2.0 * y; };
+  auto re = [](double x, double y) { return 1000.0 + 3.0 * x - 5.0 * y; };
+  for (std::size_t i = 0; i < n; ++i) {
+    const double dxl = 0.02 / (1 << hb(i));
+    for (int k = 0; k < 2; ++k) hx(i, k) += 0.2 * dxl * s(rng);
+    hu(i, 0) = ue(hx(i, 0), hx(i, 1));
+    hu(i, 1) = ve(hx(i, 0), hx(i, 1));
+    hr(i) = re(hx(i, 0), hx(i, 1));
+  }
+  // guards start from wrong values, so that a guard the pass skipped would fail
+  auto hg = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::AprGuard{}));
+  for (std::size_t i = 0; i < n; ++i)
+    if (hg(i)) {
+      hu(i, 0) = hu(i, 1) = 0.0;
+      hr(i) = 1000.0;
+    }
+  Kokkos::deep_copy(p.get(field::Position{}), hx);
+  Kokkos::deep_copy(p.get(field::Velocity{}), hu);
+  Kokkos::deep_copy(p.get(field::Density{}), hr);
+  sim.invalidate_neighbours();
+  sim.evaluate();
+  sim.prepare_output();  // passive guards too
+  const HostState h = host_state(sim);
+  auto hgr = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::DensityGradient{}));
+  double err_u = 0, err_rho = 0, err_grad = 0;
+  int checked = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!h.guard(i)) continue;
+    // interior of a full support: R_0 = 0.06 m (+ jitter) from the block's free surface
+    const double x = h.x(i, 0), yy = h.x(i, 1);
+    if (x < 0.07 || x > 0.53 || yy < 0.07 || yy > 0.33) continue;
+    ++checked;
+    err_u = std::max(err_u, std::hypot(h.u(i, 0) - ue(x, yy), h.u(i, 1) - ve(x, yy)));
+    err_rho = std::max(err_rho, std::abs(h.rho(i) - re(x, yy)));
+    err_grad = std::max(err_grad, std::hypot(hgr(i, 0) - 3.0, hgr(i, 1) + 5.0));
+  }
+  std::printf("APR guard interpolation of a linear field: %d guards, max error u %.2e m/s, rho %.2e kg/m^3, grad rho %.2e\n",
+              checked, err_u, err_rho, err_grad);
+  // round-off: u ~ 1 m/s, rho ~ 1e3 kg/m^3, grad rho ~ 5 kg/m^4 (the fit's linear coefficients / R)
+  CHECK(checked > 100);
+  CHECK(err_u < 1e-13);
+  CHECK(err_rho < 1e-10);
+  CHECK(err_grad < 1e-9);
+}
+
+TEST_CASE("APR interaction lists: no symmetric pair mixes two radii, guards see SPH particles only", "[apr]") {
+  const std::string y =
+      "dimension: 2\n"
+      "domain: {min: [0, 0], max: [0.64, 0.64], periodic: [true, true]}\n"
+      "fluid: {rho0: 1000, sound_speed: 10}\n"
+      "discretisation: {dx: 0.02, R_over_dx: 3}\n"
+      "fluid_blocks: [{min: [0, 0], max: [0.64, 0.64]}]\n"
+      "scheme: {time_integrator: rk4}\n"
+      "time: {duration: 1, output_interval: 1}\n"
+      "refinement:\n"
+      "  zones:\n"
+      "    - name: level1\n"
+      "      min: [0.12, 0.12]\n"
+      "      max: [0.52, 0.52]\n"
+      "      zones:\n"
+      "        - name: level2\n"
+      "          min: [0.2, 0.2]\n"
+      "          max: [0.44, 0.44]\n"
+      "          zones: [{name: level3, min: [0.27, 0.27], max: [0.37, 0.37]}]\n";
+  Simulation<2> sim(parse_case(y, "levels.yaml"));
+  const auto& apr = sim.refinement();
+  REQUIRE(apr.levels() == 4);
+  const HostState h = host_state(sim);
+  auto copy = [](const NeighbourList<2>& l) {
+    return std::make_pair(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), l.offsets),
+                          Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), l.neighbours));
+  };
+  const auto dot = copy(apr.symmetric_list()), cross = copy(apr.guard_list());
+  std::size_t mixed = 0, guard_rows = 0, guard_to_guard = 0, dot_pairs = 0, asym = 0;
+  const int n = static_cast<int>(sim.particles().size());
+  for (int i = 0; i < n; ++i) {
+    for (int a = dot.first(i); a < dot.first(i + 1); ++a) {
+      const int j = dot.second(a);
+      ++dot_pairs;
+      if (h.birth(i) != h.birth(j)) ++mixed;
+      // symmetric between SPH particles: j lists i too
+      if (!h.guard(j)) {
+        bool back = false;
+        for (int b = dot.first(j); b < dot.first(j + 1); ++b) back = back || dot.second(b) == i;
+        if (!back) ++asym;
+      }
+    }
+    if (h.guard(i) && dot.first(i + 1) > dot.first(i)) ++guard_rows;
+    for (int a = cross.first(i); a < cross.first(i + 1); ++a)
+      if (h.guard(cross.second(a))) ++guard_to_guard;
+  }
+  int per_level[4] = {0, 0, 0, 0};
+  for (int i = 0; i < n; ++i) per_level[h.birth(i)]++;
+  std::printf("APR 4 levels: particles per level %d %d %d %d, %zu L. pairs, %d guards + %d passive\n", per_level[0], per_level[1],
+              per_level[2], per_level[3], dot_pairs, apr.guards(), apr.passive());
+  for (int l = 0; l < 4; ++l) CHECK(per_level[l] > 0);
+  CHECK(dot_pairs > 0);
+  CHECK(mixed == 0);
+  CHECK(guard_rows == 0);
+  CHECK(guard_to_guard == 0);
+  CHECK(asym == 0);
+  // the level ranges partition the sorted set, SPH particles first
+  for (int l = 0; l < 4; ++l)
+    for (int i = apr.first(l); i < apr.end(l); ++i) {
+      CHECK(h.birth(i) == l);
+      CHECK((h.guard(i) != 0) == (i >= apr.active_end(l)));
+    }
+  // a few steps run (nested levels, one global time step)
+  for (int k = 0; k < 5; ++k) sim.step(1.0);
+  CHECK(sim.diagnostics().finite);
+}
+
+TEST_CASE("Refinement zones: bad input names the file, line and key", "[unit][case][apr]") {
+  const std::string head =
+      "dimension: 2\n"
+      "domain: {min: [0, 0], max: [1, 1]}\n"
+      "fluid: {rho0: 1000, sound_speed: 10}\n"
+      "discretisation: {dx: 0.02}\n"
+      "fluid_blocks: [{min: [0, 0], max: [1, 0.5]}]\n"
+      "time: {duration: 1, output_interval: 1}\n"
+      "refinement:\n"
+      "  zones:\n";
+  auto error_of = [&](const std::string& zones) {
+    try {
+      parse_case(head + zones, "zones.yaml");
+    } catch (const CaseError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  // a good nesting parses, with its levels
+  const Scene ok = parse_case(head +
+                                  "    - name: outer\n      min: [0.2, 0.1]\n      max: [0.8, 0.45]\n"
+                                  "      zones: [{name: inner, min: [0.4, 0.2], max: [0.6, 0.35]}]\n",
+                              "zones.yaml");
+  REQUIRE(ok.refinement_zones.size() == 2);
+  CHECK(ok.refinement_zones[1].level == 2);
+  CHECK(ok.refinement_zones[1].parent == 0);
+  CHECK(ok.max_refinement_level() == 2);
+  CHECK_THAT(error_of("    - {name: far, min: [2, 2], max: [3, 3]}\n"),
+             Catch::Contains("zones.yaml:9:") && Catch::Contains("key 'refinement.zones[0].min': the zone lies outside the domain"));
+  CHECK_THAT(error_of("    - {name: a, min: [0.1, 0.1], max: [0.5, 0.4]}\n    - {name: b, min: [0.4, 0.2], max: [0.7, 0.45]}\n"),
+             Catch::Contains("zones.yaml:10:") && Catch::Contains("key 'refinement.zones[1].min'") &&
+                 Catch::Contains("overlaps zone 'a' of the same level without being nested"));
+  CHECK_THAT(error_of("    - name: outer\n      min: [0.2, 0.1]\n      max: [0.8, 0.45]\n"
+                      "      zones: [{name: inner, min: [0.21, 0.2], max: [0.6, 0.35]}]\n"),
+             Catch::Contains("zones.yaml:12:") && Catch::Contains("key 'refinement.zones[0].zones[0].min'") &&
+                 Catch::Contains("must lie inside the zone 'outer'"));
+  // seven nested levels: deeper than supported
+  std::string deep;
+  std::string indent = "    ";
+  double lo = 0.1, hi = 0.9, ylo = 0.05, yhi = 0.45;
+  for (int l = 1; l <= 7; ++l) {
+    if (l > 1) {  // inset by more than the transition layer R_{l-1} = 0.06 / 2^(l-1)
+      const double inset = 0.07 / (1 << (l - 2));
+      lo += inset;
+      hi -= inset;
+      ylo += inset;
+      yhi -= inset;
+    }
+    deep += indent + "- name: z" + std::to_string(l) + "\n" + indent + "  min: [" + std::to_string(lo) + ", " +
+            std::to_string(ylo) + "]\n" + indent + "  max: [" + std::to_string(hi) + ", " + std::to_string(yhi) + "]\n";
+    if (l < 7) deep += indent + "  zones:\n";
+    indent += "    ";
+  }
+  CHECK_THAT(error_of(deep), Catch::Contains("level 7 is deeper than the 6 levels supported"));
+  CHECK_THAT(error_of("    - {name: a, min: [0.1, 0.1], max: [0.5, 0.4], velocity: [1, 0], follow: pressure}\n"),
+             Catch::Contains("either moves with a velocity or follows a criterion"));
+  CHECK_THAT(error_of("    - {name: a, min: [0.5, 0.1], max: [0.1, 0.4]}\n"), Catch::Contains("expected max > min"));
+}
+
+TEST_CASE("APR: a zone moving through fluid at rest refines ahead of it and derefines behind it", "[apr]") {
+  std::string y =
+      "dimension: 2\n"
+      "domain: {min: [0, 0], max: [0.6, 0.4], periodic: [true, true]}\n"
+      "fluid: {rho0: 1000, sound_speed: 10}\n"
+      "discretisation: {dx: 0.02, R_over_dx: 3}\n"
+      "fluid_blocks: [{min: [0, 0], max: [0.6, 0.4]}]\n"
+      "scheme: {time_integrator: rk4}\n"
+      "time: {duration: 1, output_interval: 1}\n"
+      "refinement: {zones: [{name: box, min: [0.1, 0.12], max: [0.2, 0.28], velocity: [1.0, 0]}]}\n";
+  Simulation<2> sim(parse_case(y, "moving.yaml"));
+  const double m0 = sim.diagnostics().mass;
+  const std::int64_t refined0 = sim.refinement().refined();
+  double worst = 0, max_speed = 0;
+  while (sim.time() < 0.25) {  // the box moves 0.25 m: past its own length and layers
+    sim.step(1.0);
+    const Diagnostics d = sim.diagnostics();
+    worst = std::max(worst, std::abs(d.mass - m0) / m0);
+    max_speed = std::max(max_speed, d.max_speed);
+  }
+  const auto& z = sim.refinement().zones();
+  std::printf("APR moving zone: box at x = [%.4f, %.4f] after %.3f s; %lld refinements after the start, %lld daughters deleted; "
+              "leaf-mass drift %.2e; max speed %.2e m/s\n",
+              z.lo[0][0], z.hi[0][0], sim.time(), static_cast<long long>(sim.refinement().refined() - refined0),
+              static_cast<long long>(sim.refinement().deleted()), worst, max_speed);
+  CHECK(z.lo[0][0] == Approx(0.1 + sim.time()).margin(2e-3));  // placed at each step's start (dt ~ 1e-3 s)
+  CHECK(sim.refinement().refined() - refined0 > 50);
+  CHECK(sim.refinement().deleted() > 200);
+  CHECK(worst <= 1e-12);
+  CHECK(max_speed < 1e-6);  // the fluid at rest stays at rest while the levels move through it
+}
+
+TEST_CASE("APR: a zone following the speed is re-centred on the fastest SPH particle of its search region", "[apr]") {
+  std::string y =
+      "dimension: 2\n"
+      "domain: {min: [0, 0], max: [0.4, 0.4], periodic: [true, true]}\n"
+      "fluid: {rho0: 1000, sound_speed: 10}\n"
+      "discretisation: {dx: 0.02, R_over_dx: 3}\n"
+      "fluid_blocks: [{min: [0, 0], max: [0.4, 0.4], velocity: {taylor_green: {amplitude: 1.0, wavelength: 0.4}}}]\n"
+      "scheme: {time_integrator: rk4}\n"
+      "time: {duration: 1, output_interval: 1}\n"
+      "refinement: {zones: [{name: box, min: [0.15, 0.15], max: [0.25, 0.25], follow: speed, search_min: [0.0, 0.05],"
+      " search_max: [0.4, 0.15], every: 1}]}\n";
+  Simulation<2> sim(parse_case(y, "follow.yaml"));
+  sim.step(1.0);
+  // |u| of the Taylor-Green field peaks on y = 0.1 (sin(k y) = 1) at x = 0, 0.2, 0.4: the box centre moves onto y ~ 0.1
+  const auto& z = sim.refinement().zones();
+  const double yc = 0.5 * (z.lo[0][1] + z.hi[0][1]);
+  std::printf("APR following zone: centre y = %.4f (the speed peaks on y = 0.1)\n", yc);
+  CHECK(std::abs(yc - 0.1) <= 0.011);  // the particle nearest the peak line (dx / 2)
+  CHECK(z.hi[0][0] - z.lo[0][0] == Approx(0.1));
+}
