@@ -144,6 +144,8 @@ class Simulation {
   void check_state(double dt);
   // APR: the per-level derivative evaluation, the bookkeeping at a step start, the lists
   void evaluate_levels();
+  bool consistent_laplacian() const;
+  FluxArgs<D> state_flux_args(int n);
   void refinement_step_start();
   void refinement_bookkeeping();
   void rebuild_level_lists();

@@ -429,6 +429,37 @@ void Simulation<D>::reorder_by_cell() {
   list_valid_ = false;
 }
 
+// Viscous flows along no-slip walls take the consistent Laplacian (kernels/ConsistentLaplacian.hpp).
+template <int D>
+bool Simulation<D>::consistent_laplacian() const {
+  return !walls_.empty() && scene_.viscous_term == ViscousTerm::Morris && has_no_slip_wall(scene_);
+}
+
+// What every flux evaluation reads, uniform (evaluate) or per level (evaluate_levels): the
+// box, body force, state views and viscosity; with the consistent Laplacian, its weight
+// array sized for n particles (grown with some slack).
+template <int D>
+FluxArgs<D> Simulation<D>::state_flux_args(int n) {
+  FluxArgs<D> a;
+  a.box = box_;
+  for (int k = 0; k < D; ++k) a.body[k] = scene_.gravity[k] + scene_.body_force[k];
+  a.x = p_.get(field::Position{});
+  a.u = p_.get(field::Velocity{});
+  a.rho = p_.get(field::Density{});
+  a.P = p_.get(field::Pressure{});
+  a.m = p_.get(field::Mass{});
+  a.du = p_.get(field::Acceleration{});
+  a.drho = p_.get(field::DensityRate{});
+  // the lattice factor scales the plain Morris term; the consistent one has its own weights
+  a.nu = scene_.viscous_term == ViscousTerm::Morris && !has_no_slip_wall(scene_) ? scene_.nu * morris_factor_ : scene_.nu;
+  if (consistent_laplacian()) {
+    if (static_cast<int>(laplacian_weights_.extent(0)) < n)
+      laplacian_weights_ = LaplacianWeightView<D>("ondine::NFM::laplacian_weights", n + n / 8 + 16);
+    a.laplacian_weights = laplacian_weights_;
+  }
+  return a;
+}
+
 template <int D>
 void Simulation<D>::evaluate() {
   if (apr_on_) {
@@ -438,21 +469,10 @@ void Simulation<D>::evaluate() {
   ensure_neighbours();
   refresh_halos();
   const int n = n_own_, n_all = static_cast<int>(p_.size());
-  FluxArgs<D> a;
+  FluxArgs<D> a = state_flux_args(n);
   a.n = n;
   a.list = list_;
-  a.box = box_;
   a.R = R_;
-  for (int k = 0; k < D; ++k) a.body[k] = scene_.gravity[k] + scene_.body_force[k];
-  a.x = p_.get(field::Position{});
-  a.u = p_.get(field::Velocity{});
-  a.rho = p_.get(field::Density{});
-  a.P = p_.get(field::Pressure{});
-  a.m = p_.get(field::Mass{});
-  a.du = p_.get(field::Acceleration{});
-  a.drho = p_.get(field::DensityRate{});
-  // the lattice factor scales the plain Morris term; the consistent one has its own A_i
-  a.nu = scene_.viscous_term == ViscousTerm::Morris && !has_no_slip_wall(scene_) ? scene_.nu * morris_factor_ : scene_.nu;
   a.delta_coeff = scene_.delta_sph * scene_.c0 * R_;
   a.av_alpha_R_c0 = scene_.artificial_viscosity * R_ * scene_.c0;
   detail::with_eos<D>(scene_, [&](auto eos) { update_pressure<D>(eos, a.rho, a.P, n_all); });
@@ -472,9 +492,7 @@ void Simulation<D>::evaluate() {
     ShepardGammaPass<D>{walls_.segments(), R_, box_, a.x, p_.get(field::ShepardGamma{})}.run(n_all);
   }
   // viscous flows along no-slip walls: the consistent Laplacian (kernels/ConsistentLaplacian.hpp)
-  const bool morris_walls = walls && scene_.viscous_term == ViscousTerm::Morris && has_no_slip_wall(scene_);
-  if (morris_walls && static_cast<int>(laplacian_weights_.extent(0)) < n)  // grown with some slack
-    laplacian_weights_ = LaplacianWeightView<D>("ondine::NFM::laplacian_weights", n + n / 8 + 16);
+  const bool morris_walls = consistent_laplacian();
   if (scene_.delta_sph > 0 || walls) {
     a.grad_rho = p_.get(field::DensityGradient{});
     with_kernel<D>(scene_.kernel, R_, [&](auto W) {
@@ -489,7 +507,6 @@ void Simulation<D>::evaluate() {
     });
     if (!comm_.serial()) exchange_.refresh(p_, comm_, field::DensityGradient{});
   }
-  if (morris_walls) a.laplacian_weights = laplacian_weights_;
   flux_(a);
   if (walls) {
     const double eos_gamma = scene_.eos == EosLaw::Tait ? scene_.tait_gamma : 1.0;

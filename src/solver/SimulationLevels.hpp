@@ -73,24 +73,10 @@ void Simulation<D>::evaluate_levels() {
   const int n = n_own_;
   if (!walls_.empty()) update_walls(stage_time_);
   apr_.interpolate(p_, box_, false, walls_.segments());  // guards from this stage's SPH particles (5.24)
-  FluxArgs<D> a;
+  FluxArgs<D> a = state_flux_args(n);
   a.list = apr_.symmetric_list();
-  a.box = box_;
-  for (int k = 0; k < D; ++k) a.body[k] = scene_.gravity[k] + scene_.body_force[k];
-  a.x = p_.get(field::Position{});
-  a.u = p_.get(field::Velocity{});
-  a.rho = p_.get(field::Density{});
-  a.P = p_.get(field::Pressure{});
-  a.m = p_.get(field::Mass{});
-  a.du = p_.get(field::Acceleration{});
-  a.drho = p_.get(field::DensityRate{});
-  // as in evaluate(): the lattice factor scales the plain Morris term; with no-slip walls the
-  // consistent Laplacian's weights (kernels/ConsistentLaplacian.hpp) are solved per level
-  const bool morris_walls = !walls_.empty() && scene_.viscous_term == ViscousTerm::Morris && has_no_slip_wall(scene_);
-  a.nu = scene_.viscous_term == ViscousTerm::Morris && !has_no_slip_wall(scene_) ? scene_.nu * morris_factor_ : scene_.nu;
-  if (morris_walls && static_cast<int>(laplacian_weights_.extent(0)) < n)
-    laplacian_weights_ = LaplacianWeightView<D>("ondine::NFM::laplacian_weights", n + n / 8 + 16);
-  if (morris_walls) a.laplacian_weights = laplacian_weights_;
+  // with no-slip walls the consistent Laplacian's weights are solved per level
+  const bool morris_walls = consistent_laplacian();
   detail::with_eos<D>(scene_, [&](auto eos) { update_pressure<D>(eos, a.rho, a.P, n); });
   if (scene_.background_pressure) {
     double pmin = 0;
