@@ -91,7 +91,17 @@ struct DensityGradientPass {
       // a support cut by a free surface, or meeting walls that move relative to each other
       // (the velocity jump at a lid corner), keeps the plain operator (ConsistentLaplacian.hpp)
       const double gamma_i = lap.gamma(i);
-      Basis::solve(moments, shepard >= 0.9 * gamma_i && smooth_wall_data, lap.kappa, gamma_i, lap.weights, i);
+      if (Basis::solve(moments, shepard >= 0.9 * gamma_i && smooth_wall_data, lap.kappa, gamma_i, lap.weights, i)) {
+        // positive on every pair and no-slip wall point, or the plain operator (ConsistentLaplacian.hpp)
+        bool positive = true;
+        for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int, const Vec<D>& xij, const double) {
+          positive = positive && Basis::weight(lap.weights, i, xij) >= 0.0;
+        });
+        for_each_point_within<D>(lap.wall_cells, box, lap.wall.x, xi, R2, [&](const int q, const Vec<D>& xiq, const double) {
+          positive = positive && (!lap.wall.no_slip(q) || Basis::weight(lap.weights, i, xiq) >= 0.0);
+        });
+        if (!positive) Basis::fall_back(lap.kappa, lap.weights, i);
+      }
     }
   }
 

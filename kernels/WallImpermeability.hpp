@@ -6,7 +6,7 @@
 // hard enough (an impact, a start 0.01 dx from a corner) goes through the wall and
 // is lost behind it or blows up (docs/validation.md, stability suite).
 // After each time step, the path of each particle over the step, from x0 (the
-// start of the step, moved with the wall: x0 + u_w dt) to x1, is tested against
+// start of the step, moved with the wall's normal motion: x0 + (u_w.n) n dt) to x1, is tested against
 // every wall segment; where it crosses one from the fluid side (the earliest
 // crossing, corners included), x1 is mirrored back across that segment's line,
 // x1 <- x1 - 2 d1 n_in, and the velocity relative to the wall loses its component
@@ -51,8 +51,11 @@ struct WallImpermeability {
             for (int s = 0; s < seg.count; ++s) {
               const Vec<D> n = load<D>(seg.n_in, s);
               const Vec<D> a = load<D>(seg.a, s) - off, ab = load<D>(seg.b, s) - load<D>(seg.a, s);
-              // the start moves with the wall over the step (first sweep; then it is on the wall)
-              const Vec<D> p0 = first_sweep ? from + dt * load<D>(wall_velocity, seg.wall(s)) : from;
+              // the start moves with the wall's normal motion over the step (first sweep; then it
+              // is on the wall). Only the normal part: a sliding wall (a cavity lid) keeps its
+              // segments in place, and shifting by its tangential velocity would carry the path
+              // past the segment's end and miss a crossing next to a corner.
+              const Vec<D> p0 = first_sweep ? from + (dt * dot(load<D>(wall_velocity, seg.wall(s)), n)) * n : from;
               const double d0 = dot(p0 - a, n), d1 = dot(to - a, n);
               if (!(d0 >= 0.0 && d1 < 0.0)) continue;
               const double tau = d0 / (d0 - d1);
