@@ -25,12 +25,13 @@
 // no-slip walls of different velocities (a lid corner: no smooth field fits the jump),
 // or where the system is singular or gives a non-positive diagonal, the weights fall
 // back to the plain operator scaled by the lattice factor kappa
-// (kernels/MorrisLatticeFactor.hpp). So do weights that are negative for one of the
-// particle's pairs or wall points: with every c_ij s_i >= 0 the explicit viscous update
+// (kernels/MorrisLatticeFactor.hpp). So do weights that are negative, or above 3 kappa,
+// for one of the particle's pairs or wall points: with every c_ij s_i >= 0 the explicit viscous update
 // of u_i is a positive average of its neighbours' (a discrete maximum principle), stable
 // under the viscous step bound whatever the asymmetry; a negative weight (a disordered
 // support next to a lid, measured at 100 x 100 in the Re = 1000 cavity) is anti-diffusive
-// and blew the run up at t = 3 s.
+// and blew the run up at t = 3 s; unbounded positive weights (a particle almost on a wall
+// point) exceed the stiffness the viscous step bound allows for.
 #include "kernels/Fields.hpp"
 #include "kernels/Math.hpp"
 #include "kernels/Vec.hpp"
@@ -80,6 +81,9 @@ template <int D>
 struct LaplacianBasis {
   static constexpr int N = D * (D + 1) / 2;  // quadratic part
   static constexpr int K = N + D;            // with the linear part
+  // bound on a pair weight s_i(x) / kappa: the viscous time-step bound (2.103) assumes the
+  // plain operator's stiffness; weights up to 3 kappa keep RK4 within its stability limit
+  static constexpr double max_weight = 3.0;
   // psi(x): x_a^2 (a < D), then 2 x_a x_b (a < b), then x_a
   KOKKOS_INLINE_FUNCTION static void psi(const Vec<D>& x, double* f) {
     int p = 0;

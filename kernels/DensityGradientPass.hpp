@@ -92,15 +92,21 @@ struct DensityGradientPass {
       // (the velocity jump at a lid corner), keeps the plain operator (ConsistentLaplacian.hpp)
       const double gamma_i = lap.gamma(i);
       if (Basis::solve(moments, shepard >= 0.9 * gamma_i && smooth_wall_data, lap.kappa, gamma_i, lap.weights, i)) {
-        // positive on every pair and no-slip wall point, or the plain operator (ConsistentLaplacian.hpp)
-        bool positive = true;
+        // within [0, max_weight kappa] on every pair and no-slip wall point, or the plain
+        // operator (ConsistentLaplacian.hpp)
+        const double s_max = LaplacianBasis<D>::max_weight * lap.kappa;
+        bool bounded = true;
+        const auto within = [&](const Vec<D>& xr) {
+          const double s = Basis::weight(lap.weights, i, xr);
+          return s >= 0.0 && s <= s_max;
+        };
         for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int, const Vec<D>& xij, const double) {
-          positive = positive && Basis::weight(lap.weights, i, xij) >= 0.0;
+          bounded = bounded && within(xij);
         });
         for_each_point_within<D>(lap.wall_cells, box, lap.wall.x, xi, R2, [&](const int q, const Vec<D>& xiq, const double) {
-          positive = positive && (!lap.wall.no_slip(q) || Basis::weight(lap.weights, i, xiq) >= 0.0);
+          bounded = bounded && (!lap.wall.no_slip(q) || within(xiq));
         });
-        if (!positive) Basis::fall_back(lap.kappa, lap.weights, i);
+        if (!bounded) Basis::fall_back(lap.kappa, lap.weights, i);
       }
     }
   }

@@ -491,7 +491,7 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
   // scheme
   if (const YAML::Node sc = root["scheme"]) {
     r.only_keys(sc, "scheme", {"viscous_term", "delta_sph", "artificial_viscosity", "background_pressure",
-                               "time_integrator", "cfl", "shifting"});
+                               "time_integrator", "cfl", "shifting", "consistent_laplacian"});
     if (sc["viscous_term"]) {
       const std::string w = r.word(sc["viscous_term"], "scheme.viscous_term", {"none", "morris", "monaghan_gingold"});
       s.viscous_term = w == "morris" ? ViscousTerm::Morris : w == "monaghan_gingold" ? ViscousTerm::MonaghanGingold : ViscousTerm::None;
@@ -501,6 +501,7 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
       if (s.delta_sph >= 0.2) r.fail(sc["delta_sph"], "scheme.delta_sph", "expected 0 <= delta < 0.2 (stability bound of thesis 2.60)");
     }
     if (sc["artificial_viscosity"]) s.artificial_viscosity = r.non_negative(sc["artificial_viscosity"], "scheme.artificial_viscosity", " (alpha)");
+    if (sc["consistent_laplacian"]) s.consistent_laplacian = r.boolean(sc["consistent_laplacian"], "scheme.consistent_laplacian");
     if (sc["background_pressure"]) s.background_pressure = r.boolean(sc["background_pressure"], "scheme.background_pressure");
     if (sc["shifting"]) {
       s.shifting = r.boolean(sc["shifting"], "scheme.shifting");

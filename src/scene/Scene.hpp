@@ -128,6 +128,7 @@ struct Scene {
   double artificial_viscosity = 0.0;  // alpha of (2.58); 0 = off
   bool background_pressure = false;   // tensile correction (2.105)
   bool shifting = false;              // particle shifting (2.107)-(2.111), flows without free surface
+  bool consistent_laplacian = true;   // Morris scenes with no-slip walls: the consistent Laplacian (false: the thesis' operator)
   TimeIntegrator integrator = TimeIntegrator::RK4;
   double cfl_acoustic = 0.375;  // (2.102)
   double cfl_viscous = 0.12;    // (2.103)
@@ -171,6 +172,12 @@ inline bool has_no_slip_wall(const Scene& s) {
   for (const Wall& w : s.walls)
     if (w.condition == WallCondition::NoSlip) return true;
   return false;
+}
+
+// Morris viscosity along no-slip walls takes the consistent Laplacian unless the case
+// asks for the thesis' operator (scheme.consistent_laplacian: false).
+inline bool uses_consistent_laplacian(const Scene& s) {
+  return s.viscous_term == ViscousTerm::Morris && s.consistent_laplacian && has_no_slip_wall(s);
 }
 
 }  // namespace ondine

@@ -59,7 +59,7 @@ FluxFunction<D> with_viscous(const Scene& s, TypeList<T...>) {
   switch (s.viscous_term) {
     case ViscousTerm::Morris:
       // no-slip NFM walls: the second-order consistent operator (kernels/ConsistentLaplacian.hpp)
-      if (has_no_slip_wall(s)) return with_av<D, Kernel>(s, TypeList<T..., term::ConsistentMorrisViscosity<D>>{});
+      if (uses_consistent_laplacian(s)) return with_av<D, Kernel>(s, TypeList<T..., term::ConsistentMorrisViscosity<D>>{});
       return with_av<D, Kernel>(s, TypeList<T..., term::MorrisViscosity>{});
     case ViscousTerm::MonaghanGingold: return with_av<D, Kernel>(s, TypeList<T..., term::MonaghanGingoldViscosity>{});
     case ViscousTerm::None: break;

@@ -18,6 +18,7 @@
 #include "kernels/Integrator.hpp"
 #include "kernels/NeighbourList.hpp"
 #include "kernels/OrbLookup.hpp"
+#include "kernels/WallPressure.hpp"
 #include "io/Checkpoint.hpp"
 #include "parallel/Communicator.hpp"
 #include "parallel/Decomposition.hpp"
@@ -145,6 +146,7 @@ class Simulation {
   // APR: the per-level derivative evaluation, the bookkeeping at a step start, the lists
   void evaluate_levels();
   bool consistent_laplacian() const;
+  WallEos wall_eos() const;
   FluxArgs<D> state_flux_args(int n);
   void refinement_step_start();
   void refinement_bookkeeping();

@@ -432,7 +432,15 @@ void Simulation<D>::reorder_by_cell() {
 // Viscous flows along no-slip walls take the consistent Laplacian (kernels/ConsistentLaplacian.hpp).
 template <int D>
 bool Simulation<D>::consistent_laplacian() const {
-  return !walls_.empty() && scene_.viscous_term == ViscousTerm::Morris && has_no_slip_wall(scene_);
+  return !walls_.empty() && uses_consistent_laplacian(scene_);
+}
+
+// The equation of state of the NFM wall pressure (4.14), for the wall flux and the wall
+// forces alike.
+template <int D>
+WallEos Simulation<D>::wall_eos() const {
+  const double eos_gamma = scene_.eos == EosLaw::Tait ? scene_.tait_gamma : 1.0;
+  return WallEos{scene_.rho0, scene_.c0, eos_gamma};
 }
 
 // What every flux evaluation reads, uniform (evaluate) or per level (evaluate_levels): the
@@ -451,7 +459,7 @@ FluxArgs<D> Simulation<D>::state_flux_args(int n) {
   a.du = p_.get(field::Acceleration{});
   a.drho = p_.get(field::DensityRate{});
   // the lattice factor scales the plain Morris term; the consistent one has its own weights
-  a.nu = scene_.viscous_term == ViscousTerm::Morris && !has_no_slip_wall(scene_) ? scene_.nu * morris_factor_ : scene_.nu;
+  a.nu = scene_.viscous_term == ViscousTerm::Morris && !uses_consistent_laplacian(scene_) ? scene_.nu * morris_factor_ : scene_.nu;
   if (consistent_laplacian()) {
     if (static_cast<int>(laplacian_weights_.extent(0)) < n)
       laplacian_weights_ = LaplacianWeightView<D>("ondine::NFM::laplacian_weights", n + n / 8 + 16);
@@ -509,8 +517,7 @@ void Simulation<D>::evaluate() {
   }
   flux_(a);
   if (walls) {
-    const double eos_gamma = scene_.eos == EosLaw::Tait ? scene_.tait_gamma : 1.0;
-    const WallEos eos{scene_.rho0, scene_.c0, eos_gamma};
+    const WallEos eos = wall_eos();
     const auto gamma = p_.get(field::ShepardGamma{});
     with_kernel<D>(scene_.kernel, R_, [&](auto W) {
       using K = decltype(W);
@@ -911,13 +918,12 @@ std::vector<WallForce> Simulation<D>::wall_forces() {
   ensure_neighbours();  // the particle cell list is current
   refresh_halos();
   const int nq = walls_.points().count;
-  const double eos_gamma = scene_.eos == EosLaw::Tait ? scene_.tait_gamma : 1.0;
   const double nu = scene_.viscous_term != ViscousTerm::None ? scene_.nu : 0.0;
   Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace> traction("ondine::NFM::traction", nq, 2 * D);
   with_kernel<D>(scene_.kernel, R_, [&](auto W) {
     Kokkos::parallel_for("ondine::NFM::wall_traction", Kokkos::RangePolicy<ExecSpace>(0, nq),
                          WallTraction<D, decltype(W)>{walls_.points(), cells_, W, R_ * R_, nu, scene_.rho0,
-                                                      WallEos{scene_.rho0, scene_.c0, eos_gamma}, 0.05 * R_, box_, p_.get(field::Position{}),
+                                                      wall_eos(), 0.05 * R_, box_, p_.get(field::Position{}),
                                                       p_.get(field::Velocity{}), p_.get(field::Density{}),
                                                       p_.get(field::Pressure{}), p_.get(field::Mass{}),
                                                       p_.get(field::DensityGradient{}), traction});

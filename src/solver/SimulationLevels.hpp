@@ -112,7 +112,6 @@ void Simulation<D>::evaluate_levels() {
       });
   }
   // the guards' density gradient came with their interpolation (GuardInterpolation.hpp)
-  const double eos_gamma = scene_.eos == EosLaw::Tait ? scene_.tait_gamma : 1.0;
   for (int l = 0; l < apr_.levels(); ++l) {
     const int b = apr_.first(l), e = apr_.active_end(l);
     if (e == b) continue;
@@ -125,7 +124,7 @@ void Simulation<D>::evaluate_levels() {
     flux_(a);
     if (!walls) continue;
     with_kernel<D>(scene_.kernel, Rl, [&](auto W) {
-      const WallEos weos{scene_.rho0, scene_.c0, eos_gamma};
+      const WallEos weos = wall_eos();
       if (morris_walls)
         Kokkos::parallel_for("ondine::NFM::WallFlux", Kokkos::RangePolicy<ExecSpace>(b, e),
                              WallFluxPass<D, decltype(W), true, true>{walls_.points(), wall_cells(l), W, Rl * Rl, a.body, scene_.nu, weos,
