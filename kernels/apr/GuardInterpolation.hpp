@@ -52,6 +52,8 @@ struct GuardWeights {
   // the sources within the radius used come first in the guard's Lx row (reordered here);
   // used(i) counts them, and GuardApply reads only those
   Kokkos::View<int*, MemSpace> used;
+  // per guard: 1 once it was fitted at R_m (reset with the lists): later steps fit there directly
+  Kokkos::View<int*, MemSpace> wide;
 
   KOKKOS_INLINE_FUNCTION static void basis(const Vec<D>& e, double* p) {
     p[0] = 1.0;
@@ -184,17 +186,24 @@ struct GuardWeights {
     // daughter guard's own radius, and for a mother guard its daughters' (the quadratic
     // fit needs no wider support, and a support of R_m would hold 2^D times more sources)
     const int r = birth(i);
+    const bool daughter = mother(i) == 0 && r > 0;
+    bool at_Rm = daughter && wide(i) == 1;
     Fit f;
-    fit(i, zones.R[r + (mother(i) == 1 ? 1 : 0)], f);
+    fit(i, zones.R[at_Rm ? r - 1 : r + (mother(i) == 1 ? 1 : 0)], f);
     // A daughter guard deep in its transition layer has coarse sources only (spacing
     // 2 dx_f): 7 to 9 within R_f, fewer than a quadratic fit needs, and the linear one
     // smooths the field by ~0.07 R_f^2 u'' (a velocity deficit fed to the fine SPH
     // particles: on Poiseuille Re = 1 the whole channel lagged by 5e-4 of U_max). Such
-    // a guard is fitted at its mother's radius R_m = 2 R_f (its Lx row reaches R_m).
-    if (f.degree < 2 && mother(i) == 0 && r > 0) {
+    // a guard is fitted at its mother's radius R_m = 2 R_f (its Lx row reaches R_m); the
+    // next steps fit it there directly (flag `wide`, reset when the lists are rebuilt).
+    if (f.degree < 2 && daughter) {
       Fit g;
-      fit(i, zones.R[r - 1], g);
-      if (g.degree > f.degree) f = g;
+      fit(i, zones.R[at_Rm ? r : r - 1], g);
+      if (g.degree > f.degree) {
+        f = g;
+        at_Rm = !at_Rm;
+      }
+      wide(i) = at_Rm ? 1 : 0;
     }
     const Vec<D> xi = load<D>(x, i);
     // the sources beyond the radius (the skin, or R_m where R_f sufficed) to the row's end
