@@ -49,6 +49,11 @@ struct GuardWeights {
   field_view_t<field::AprBirthLevel, D> birth;
   field_view_t<field::AprMother, D> mother;
   Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> psi;  // (Lx entry, 1 + D): value, gradient
+  // the sources within the radius used come first in the guard's Lx row (reordered here);
+  // used(i) counts them, and GuardApply reads only those
+  Kokkos::View<int*, MemSpace> used;
+  // per guard: 1 once it was fitted at R_m (reset with the lists): later steps fit there directly
+  Kokkos::View<int*, MemSpace> wide;
 
   KOKKOS_INLINE_FUNCTION static void basis(const Vec<D>& e, double* p) {
     p[0] = 1.0;
@@ -91,14 +96,19 @@ struct GuardWeights {
     }
   }
 
-  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+  // The fit of one guard at one radius: the degree reached (2, 1 or 0 = Shepard), and
+  // what the shape functions need.
+  struct Fit {
+    int degree = 0;
+    double inv_R = 0.0, m0 = 0.0, s = 0.0;
+    double z[D + 1][NB];  // degree 2: A^{-1} p(0) (value), A^{-1} e_{1+a} (gradient)
+    Mat<D> B;             // degree 1: M2^{-1}, the first moments m1 and B m1
+    Vec<D> m1, Bm1;
+  };
+
+  KOKKOS_INLINE_FUNCTION void fit(const int i, const double R, Fit& f) const {
     const int first = lx.offsets(i), nn = lx.num_neighbours(i);
-    if (nn == 0) return;  // an SPH particle (no Lx row)
-    // radius: the daughters' R_f for every guard, as the thesis prints it (5.24): a
-    // daughter guard's own radius, and a mother guard's daughters' (the quadratic fit
-    // needs no wider support, and a support of R_m would hold 2^D times more sources)
-    const double R = zones.R[birth(i) + (mother(i) == 1 ? 1 : 0)];
-    const double inv_R = 1.0 / R;
+    f.inv_R = 1.0 / R;
     const Vec<D> xi = load<D>(x, i);
     // moments in units of R: A = sum w p p^T (upper triangle)
     double A[NB][NB];
@@ -107,9 +117,9 @@ struct GuardWeights {
       for (int b = 0; b < NB; ++b) A[a][b] = 0.0;
     for (int n = 0; n < nn; ++n) {
       const int j = lx.neighbours(first + n);
-      const Vec<D> e = inv_R * box.delta(load<D>(x, j), xi);  // (x_j - x_i) / R
+      const Vec<D> e = f.inv_R * box.delta(load<D>(x, j), xi);  // (x_j - x_i) / R
       const double q = kmath::sqrt(norm2(e));
-      if (q >= 1.0) continue;  // in the skin
+      if (q >= 1.0) continue;  // beyond this radius, or in the skin
       const double w = m(j) / rho(j) * W1.value(q);  // the 1/R^D factor cancels
       double p[NB];
       basis(e, p);
@@ -119,77 +129,117 @@ struct GuardWeights {
       }
       ++count;
     }
-    const double m0 = A[0][0];
+    f.degree = 0;
+    f.m0 = A[0][0];
+    const double m0 = f.m0;
     for (int a = 0; a < NB; ++a)
       for (int b = 0; b < a; ++b) A[a][b] = A[b][a];
     // degree 1: the Schur complement s = m0 - m1^T M2^{-1} m1 tells a one-sided support
-    int degree = 0;
-    Mat<D> M2, B;
-    Vec<D> m1, Bm1 = Vec<D>::zero();
-    double s = m0;
+    Mat<D> M2;
+    Vec<D>& m1 = f.m1;
+    f.Bm1 = Vec<D>::zero();
+    f.s = m0;
     for (int a = 0; a < D; ++a) {
       m1[a] = A[0][1 + a];
       for (int b = 0; b < D; ++b) M2.a[a][b] = A[1 + a][1 + b];
     }
     double tiny = 1e-12;
     for (int a = 0; a < D; ++a) tiny *= m0;
-    if (m0 > 0.0 && invert(M2, B, tiny)) {
-      Bm1 = B * m1;
-      s = m0 - dot(m1, Bm1);
-      if (s > 0.25 * m0) degree = 1;
+    if (m0 > 0.0 && invert(M2, f.B, tiny)) {
+      f.Bm1 = f.B * m1;
+      f.s = m0 - dot(m1, f.Bm1);
+      if (f.s > 0.25 * m0) f.degree = 1;
     }
-    // degree 2: z0 = A^{-1} p(0) (value), z_a = A^{-1} e_{1+a} (gradient)
-    double z[D + 1][NB], diag[NB];
+    double diag[NB];
     for (int a = 0; a < NB; ++a) diag[a] = A[a][a];  // the factorisation keeps A's strict upper triangle
     // the quadratic fit needs twice as many sources as unknowns and no pivot below
     // 1e-6 m0 (a full support's quadratic pivots are ~5e-3 m0): a nearly singular
     // fit amplifies round-off (and noise) without bound
-    if (degree == 1 && count >= 2 * NB && cholesky(A, 1e-6 * m0)) {
-      degree = 2;
+    if (f.degree == 1 && count >= 2 * NB && cholesky(A, 1e-6 * m0)) {
+      f.degree = 2;
       for (int c = 0; c <= D; ++c) {
         double b[NB];
         for (int a = 0; a < NB; ++a) b[a] = 0.0;
         if (c == 0) basis(Vec<D>::zero(), b);
         else b[c] = 1.0;
-        for (int a = 0; a < NB; ++a) z[c][a] = b[a];
-        substitute(A, z[c]);
+        for (int a = 0; a < NB; ++a) f.z[c][a] = b[a];
+        substitute(A, f.z[c]);
         // one step of iterative refinement: the normal equations' condition number
         // (~1e6) would otherwise cost six digits of the weights
         double r[NB];
         for (int a = 0; a < NB; ++a) {
-          double v = b[a] - diag[a] * z[c][a];
+          double v = b[a] - diag[a] * f.z[c][a];
           for (int k = 0; k < NB; ++k)
-            if (k != a) v -= (k > a ? A[a][k] : A[k][a]) * z[c][k];
+            if (k != a) v -= (k > a ? A[a][k] : A[k][a]) * f.z[c][k];
           r[a] = v;
         }
         substitute(A, r);
-        for (int a = 0; a < NB; ++a) z[c][a] += r[a];
+        for (int a = 0; a < NB; ++a) f.z[c][a] += r[a];
       }
     }
-    for (int n = 0; n < nn; ++n) {
+  }
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    const int first = lx.offsets(i), nn = lx.num_neighbours(i);
+    if (nn == 0) return;  // an SPH particle (no Lx row)
+    // radius: the daughters' R_f for every guard, as the thesis prints it (5.24): a
+    // daughter guard's own radius, and for a mother guard its daughters' (the quadratic
+    // fit needs no wider support, and a support of R_m would hold 2^D times more sources)
+    const int r = birth(i);
+    const bool daughter = mother(i) == 0 && r > 0;
+    bool at_Rm = daughter && wide(i) == 1;
+    Fit f;
+    fit(i, zones.R[at_Rm ? r - 1 : r + (mother(i) == 1 ? 1 : 0)], f);
+    // A daughter guard deep in its transition layer has coarse sources only (spacing
+    // 2 dx_f): 7 to 9 within R_f, fewer than a quadratic fit needs, and the linear one
+    // smooths the field by ~0.07 R_f^2 u'' (a velocity deficit fed to the fine SPH
+    // particles: on Poiseuille Re = 1 the whole channel lagged by 5e-4 of U_max). Such
+    // a guard is fitted at its mother's radius R_m = 2 R_f (its Lx row reaches R_m); the
+    // next steps fit it there directly (flag `wide`, reset when the lists are rebuilt).
+    if (f.degree < 2 && daughter) {
+      Fit g;
+      fit(i, zones.R[at_Rm ? r : r - 1], g);
+      if (g.degree > f.degree) {
+        f = g;
+        at_Rm = !at_Rm;
+      }
+      wide(i) = at_Rm ? 1 : 0;
+    }
+    const Vec<D> xi = load<D>(x, i);
+    // the sources beyond the radius (the skin, or R_m where R_f sufficed) to the row's end
+    int k = first;
+    for (int n = first; n < first + nn; ++n) {
+      const int j = lx.neighbours(n);
+      if (f.inv_R * f.inv_R * norm2(box.delta(load<D>(x, j), xi)) < 1.0) {
+        lx.neighbours(n) = lx.neighbours(k);
+        lx.neighbours(k++) = j;
+      }
+    }
+    used(i) = k - first;
+    for (int n = 0; n < k - first; ++n) {
       const int j = lx.neighbours(first + n);
-      const Vec<D> e = inv_R * box.delta(load<D>(x, j), xi);
+      const Vec<D> e = f.inv_R * box.delta(load<D>(x, j), xi);
       const double q = kmath::sqrt(norm2(e));
       double v = 0.0;
       Vec<D> g = Vec<D>::zero();
-      if (q < 1.0 && m0 > 0.0) {
+      if (q < 1.0 && f.m0 > 0.0) {
         const double w = m(j) / rho(j) * W1.value(q);
-        if (degree == 2) {
+        if (f.degree == 2) {
           double p[NB];
           basis(e, p);
-          for (int a = 0; a < NB; ++a) v += z[0][a] * p[a];
+          for (int a = 0; a < NB; ++a) v += f.z[0][a] * p[a];
           v *= w;
           for (int c = 0; c < D; ++c) {
             double t = 0.0;
-            for (int a = 0; a < NB; ++a) t += z[1 + c][a] * p[a];
-            g[c] = w * t * inv_R;
+            for (int a = 0; a < NB; ++a) t += f.z[1 + c][a] * p[a];
+            g[c] = w * t * f.inv_R;
           }
-        } else if (degree == 1) {
+        } else if (f.degree == 1) {
           // phi = (f0 - (B m1) . f1) / s, grad = B (f1 - phi m1) / R
-          v = w * (1.0 - dot(Bm1, e)) / s;
-          g = inv_R * (B * (w * e - v * m1));
+          v = w * (1.0 - dot(f.Bm1, e)) / f.s;
+          g = f.inv_R * (f.B * (w * e - v * f.m1));
         } else {
-          v = w / m0;  // Shepard (5.24)
+          v = w / f.m0;  // Shepard (5.24)
         }
       }
       psi(first + n, 0) = v;
@@ -205,6 +255,7 @@ template <int D>
 struct GuardApply {
   NeighbourList<D> lx;
   Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> psi;
+  Kokkos::View<int*, MemSpace> used;  // the sources within the guard's radius (GuardWeights)
   field_view_t<field::Velocity, D> u;
   field_view_t<field::Density, D> rho;
   field_view_t<field::DensityGradient, D> grad_rho;  // unallocated: not interpolated
@@ -231,7 +282,7 @@ struct GuardApply {
   }
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
-    const int first = lx.offsets(i), nn = lx.num_neighbours(i);
+    const int first = lx.offsets(i), nn = used(i);
     if (nn == 0) return;  // a guard without sources keeps its fields
     const int j0 = lx.neighbours(first);
     const Vec<D> u0 = load<D>(u, j0);

@@ -7,7 +7,8 @@
 //    the resolution of the daughters below); no pair of L. has two radii, so the
 //    pair loop needs no test. Guards have no L. row.
 //  - Lx (one way): for a guard i (active or passive), the SPH particles j of every level
-//    within its interpolation radius + skin (R_r for a daughter guard of level r, R_{r+1} for a mother guard), the sources of its Shepard interpolation (5.24). SPH
+//    within its interpolation radius + skin (R_{r-1} for a daughter guard of level r, which
+//    fits at R_r where it can, R_{r+1} for a mother guard), the sources of its interpolation (5.24). SPH
 //    particles have no Lx row; guards never see guards.
 // Built in two passes (count, scan, fill) from the cell list, like NeighbourList.
 #include "kernels/NeighbourList.hpp"
@@ -33,8 +34,9 @@ struct LevelVisitor {
   KOKKOS_INLINE_FUNCTION void operator()(const int i, F&& f) const {
     if ((guard(i) != 0) != Guards) return;
     const int r = birth(i);
-    // a mother guard interpolates at its daughters' radius (GuardInterpolation.hpp)
-    const double c2 = Guards && mother(i) == 1 ? cut2[r + 1] : cut2[r];
+    // a mother guard interpolates at its daughters' radius; a daughter guard at its own,
+    // or at its mother's where its own holds too few sources (GuardInterpolation.hpp)
+    const double c2 = !Guards ? cut2[r] : mother(i) == 1 ? cut2[r + 1] : cut2[r > 0 ? r - 1 : 0];
     const Vec<D> xi = load<D>(x, i);
     int home[D];
     for (int k = 0; k < D; ++k) home[k] = g.coord(xi[k], k);

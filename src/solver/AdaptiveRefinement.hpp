@@ -184,6 +184,12 @@ class AdaptiveRefinement {
     apr::build_list<D, true>(l_cross_, cross, n, "GuardList");
     if (psi_.extent(0) < l_cross_.neighbours.extent(0))
       psi_ = Kokkos::View<double**, Kokkos::LayoutRight, MemSpace>("ondine::APR::guard_weights", l_cross_.neighbours.extent(0), D + 1);
+    if (static_cast<int>(used_.extent(0)) < n) {
+      used_ = Kokkos::View<int*, MemSpace>("ondine::APR::guard_sources", n + n / 8);
+      wide_ = Kokkos::View<int*, MemSpace>("ondine::APR::guard_wide", n + n / 8);
+    } else {
+      Kokkos::deep_copy(wide_, 0);  // new roles: each guard tries R_f again
+    }
     weights_valid_ = false;
   }
 
@@ -198,7 +204,7 @@ class AdaptiveRefinement {
     if (passive || !weights_valid_) {
       with_kernel<D>(kernel_, 1.0, [&](auto W1) {
         apr::GuardWeights<D, decltype(W1)> f{l_cross_, box, zones_, W1, p.get(field::Position{}), p.get(field::Density{}),
-                                             p.get(field::Mass{}), p.get(field::AprBirthLevel{}), p.get(field::AprMother{}), psi_};
+                                             p.get(field::Mass{}), p.get(field::AprBirthLevel{}), p.get(field::AprMother{}), psi_, used_, wide_};
         for (int l = 0; l < levels_; ++l) {
           const int e = passive ? end_[l] : guard_end_[l];
           if (e > active_end_[l])
@@ -207,7 +213,7 @@ class AdaptiveRefinement {
       });
       weights_valid_ = true;
     }
-    apr::GuardApply<D> f{l_cross_, psi_, p.get(field::Velocity{}), p.get(field::Density{}), field_view_t<field::DensityGradient, D>(),
+    apr::GuardApply<D> f{l_cross_, psi_, used_, p.get(field::Velocity{}), p.get(field::Density{}), field_view_t<field::DensityGradient, D>(),
                          walls, zones_, p.get(field::Position{}), p.get(field::AprBirthLevel{})};
     if (p.has(field::DensityGradient{})) f.grad_rho = p.get(field::DensityGradient{});
     for (int l = 0; l < levels_; ++l) {
@@ -268,6 +274,8 @@ class AdaptiveRefinement {
   std::vector<int> first_, active_end_, guard_end_, end_;
   NeighbourList<D> l_dot_, l_cross_;
   Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> psi_;  // guard shape functions (Lx entry, value + gradient)
+  Kokkos::View<int*, MemSpace> wide_;  // per guard: fitted at R_m since the last list build (GuardWeights)
+  Kokkos::View<int*, MemSpace> used_;  // per guard: its Lx entries within the interpolation radius (first in its row)
   bool weights_valid_ = false;
   std::int64_t next_id_ = 0, refined_ = 0, deleted_ = 0;
   double interp_seconds_ = 0;
