@@ -134,18 +134,22 @@ TEST_CASE("APR: a uniform flow crossing a refinement box stays uniform", "[apr]"
   CHECK(dP_max < 1e-3 * q);
 }
 
+namespace {
+// The guard-interpolation tests' scene: a block of fluid with a free surface all round (no
+// walls) and a refinement box in its middle.
+const char* const guard_block_case =
+    "dimension: 2\n"
+    "domain: {min: [-0.1, -0.1], max: [0.7, 0.5]}\n"
+    "fluid: {rho0: 1000, sound_speed: 10}\n"
+    "discretisation: {dx: 0.02, R_over_dx: 3}\n"
+    "fluid_blocks: [{min: [0, 0], max: [0.6, 0.4]}]\n"
+    "scheme: {time_integrator: rk4, delta_sph: 0.1}\n"
+    "time: {duration: 1, output_interval: 1}\n"
+    "refinement: {zones: [{name: box, min: [0.2, 0.12], max: [0.38, 0.28]}]}\n";
+}  // namespace
+
 TEST_CASE("APR guard interpolation (5.24) reproduces a linear field inside a full support", "[apr]") {
-  // a block of fluid with a free surface all round (no walls), a refinement box in its middle
-  const std::string y =
-      "dimension: 2\n"
-      "domain: {min: [-0.1, -0.1], max: [0.7, 0.5]}\n"
-      "fluid: {rho0: 1000, sound_speed: 10}\n"
-      "discretisation: {dx: 0.02, R_over_dx: 3}\n"
-      "fluid_blocks: [{min: [0, 0], max: [0.6, 0.4]}]\n"
-      "scheme: {time_integrator: rk4, delta_sph: 0.1}\n"
-      "time: {duration: 1, output_interval: 1}\n"
-      "refinement: {zones: [{name: box, min: [0.2, 0.12], max: [0.38, 0.28]}]}\n";
-  Simulation<2> sim(parse_case(y, "linear.yaml"));
+  Simulation<2> sim(parse_case(guard_block_case, "linear.yaml"));
   // jitter the positions (a lattice would make even plain Shepard nearly exact) and
   // set u = a + B x, rho = rho0 + g . x everywhere; then one evaluation interpolates the guards
   auto& p = sim.particles();
@@ -206,16 +210,7 @@ TEST_CASE("APR guard interpolation reproduces a quadratic field, in the transiti
   // the block of the linear test; a daughter guard deep in its transition layer has only
   // coarse sources within R_f (7-9) and is fitted at R_m (GuardInterpolation.hpp): with a
   // linear fit it smoothed u by ~0.07 R_f^2 u'' (the Poiseuille interface error, docs/apr.md)
-  const std::string y =
-      "dimension: 2\n"
-      "domain: {min: [-0.1, -0.1], max: [0.7, 0.5]}\n"
-      "fluid: {rho0: 1000, sound_speed: 10}\n"
-      "discretisation: {dx: 0.02, R_over_dx: 3}\n"
-      "fluid_blocks: [{min: [0, 0], max: [0.6, 0.4]}]\n"
-      "scheme: {time_integrator: rk4, delta_sph: 0.1}\n"
-      "time: {duration: 1, output_interval: 1}\n"
-      "refinement: {zones: [{name: box, min: [0.2, 0.12], max: [0.38, 0.28]}]}\n";
-  Simulation<2> sim(parse_case(y, "quadratic.yaml"));
+  Simulation<2> sim(parse_case(guard_block_case, "quadratic.yaml"));
   auto& p = sim.particles();
   const std::size_t n = p.size();
   auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Position{}));
