@@ -192,6 +192,10 @@ struct DaughterFill {
   Kokkos::View<double* [D + 1][D], Kokkos::LayoutRight, MemSpace> grad;
   int kept;
   std::int64_t first_id;
+  // the ids of all ranks' refining mothers, sorted: family k's daughters are numbered
+  // first_id + 2^D (the mother's rank in this list) + c, whatever the rank count
+  Kokkos::View<std::int64_t*, MemSpace> families;
+  int nfamilies;
   field_view_t<field::Position, D> x;
   field_view_t<field::Velocity, D> u;
   field_view_t<field::Density, D> rho;
@@ -205,6 +209,12 @@ struct DaughterFill {
     const int mi = kept_index(refining(k));
     const int r = birth(mi);
     const double q = 0.25 * zones.dx[r];
+    int family = 0, hi = nfamilies;
+    while (family < hi) {  // the mother's rank among all refining mothers (binary search)
+      const int mid = (family + hi) / 2;
+      if (families(mid) < id(mi)) family = mid + 1;
+      else hi = mid;
+    }
     for (int c = 0; c < (1 << D); ++c) {
       const int f = kept + (k << D) + c;
       double off[D];
@@ -219,7 +229,7 @@ struct DaughterFill {
       for (int b = 0; b < D; ++b) rf += grad(k, D, b) * off[b];
       rho(f) = rf;
       m(f) = m(mi) / static_cast<double>(1 << D);
-      id(f) = first_id + (static_cast<std::int64_t>(k) << D) + c;
+      id(f) = first_id + (static_cast<std::int64_t>(family) << D) + c;
       birth(f) = r + 1;
       mother(f) = 0;
       parent(f) = id(mi);
@@ -288,6 +298,12 @@ struct Roles {
     level(i) = zones.depth(xi);
     key(i) = 3 * r + role;
   }
+};
+
+// The sort key of a particle that keeps its role (a list rebuild within a step).
+struct RoleKey {
+  Kokkos::View<int*, MemSpace> birth, guard, key;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { key(i) = 3 * birth(i) + guard(i); }
 };
 
 // Stable counting sort by key, one key at a time (a handful of keys): the

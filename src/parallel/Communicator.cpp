@@ -52,6 +52,32 @@ std::vector<std::int64_t> Communicator::gather_all(std::int64_t v) const {
   return out;
 }
 
+namespace {
+template <class T>
+std::vector<T> all_gather_v(const std::vector<T>& v, MPI_Datatype type, int size, MPI_Comm comm) {
+  if (size == 1) return v;
+  const int mine = static_cast<int>(v.size());
+  std::vector<int> counts(size), displs(size);
+  MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+  int total = 0;
+  for (int r = 0; r < size; ++r) {
+    displs[r] = total;
+    total += counts[r];
+  }
+  std::vector<T> out(static_cast<std::size_t>(total));
+  MPI_Allgatherv(v.data(), mine, type, out.data(), counts.data(), displs.data(), type, comm);
+  return out;
+}
+}  // namespace
+
+std::vector<std::int64_t> Communicator::gather_all(const std::vector<std::int64_t>& v) const {
+  return all_gather_v(v, MPI_INT64_T, size_, comm_);
+}
+
+std::vector<double> Communicator::gather_all(const std::vector<double>& v) const {
+  return all_gather_v(v, MPI_DOUBLE, size_, comm_);
+}
+
 void Communicator::exchange_known(const double* send, const std::vector<int>& send_counts, double* recv,
                                   const std::vector<int>& recv_counts, int width) const {
   if (size_ == 1) {

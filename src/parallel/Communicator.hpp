@@ -30,6 +30,9 @@ class Communicator {
   void sum_in_place(std::vector<double>& v) const;
   std::int64_t exclusive_scan(std::int64_t v) const;  // sum over lower ranks
   std::vector<std::int64_t> gather_all(std::int64_t v) const;
+  // every rank's values, concatenated in rank order (MPI_Allgatherv)
+  std::vector<std::int64_t> gather_all(const std::vector<std::int64_t>& v) const;
+  std::vector<double> gather_all(const std::vector<double>& v) const;
 
   // All-to-all of packed particles: `send` holds, rank by rank, send_counts[r]
   // rows of `width` doubles; returns the rows received, rank by rank, with the

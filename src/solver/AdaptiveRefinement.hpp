@@ -4,6 +4,7 @@
 // kernels/apr/Refinement.hpp), the level ranges of the sorted particle set and the
 // two interaction lists L. and Lx (Algorithm 3), and the guard interpolation (5.24).
 // Exists only in a Simulation whose scene has refinement zones.
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "kernels/apr/GuardInterpolation.hpp"
 #include "kernels/apr/InteractionLists.hpp"
 #include "kernels/apr/Refinement.hpp"
+#include "parallel/Communicator.hpp"
 #include "particles/ParticleSet.hpp"
 #include "scene/Scene.hpp"
 #include "solver/KernelDispatch.hpp"
@@ -107,42 +109,59 @@ class AdaptiveRefinement {
     return moved;
   }
 
-  // Refinement and derefinement (classify, prolongation, daughters), then the roles
-  // and the sort by (level, guard). `cells` must hold the current positions.
-  // Returns the new particle count.
-  int update(ParticleSet<D>& p, const CellList<D>& cells, const PeriodicBox<D>& box, int n) {
+  // Refinement and derefinement (classify, prolongation, daughters) of the n owned
+  // particles; the caller then sorts them (sort(), after a migration on several
+  // ranks: a daughter may lie in another rank's cell). `cells` must hold the
+  // current positions of the owned particles and, on several ranks, of the halos
+  // (with their birth levels): the prolongation gradient reads level-r neighbours.
+  // Collective over `comm`: the dying mothers' ids and the refining mothers' ids are
+  // gathered on every rank (a daughter may live on another rank than its mother;
+  // daughter ids follow the global order of their mothers' ids, so they do not
+  // depend on the rank count). Returns the new owned count (halos dropped).
+  int update(ParticleSet<D>& p, const CellList<D>& cells, const PeriodicBox<D>& box, int n, const Communicator& comm) {
     Kokkos::View<int*, MemSpace> action("ondine::APR::action", n), kept_index("ondine::APR::kept_index", n),
         refine_index("ondine::APR::refine_index", n);
     // the mother flags before this pass (a deleted mother takes its daughters along)
     Kokkos::View<int*, MemSpace> was_mother("ondine::APR::was_mother", n);
-    Kokkos::deep_copy(was_mother, p.get(field::AprMother{}));
+    Kokkos::deep_copy(was_mother, Kokkos::subview(p.get(field::AprMother{}), std::make_pair(0, n)));  // halos follow
     Kokkos::parallel_for("ondine::APR::classify", Kokkos::RangePolicy<ExecSpace>(0, n),
                          apr::Classify<D>{zones_, p.get(field::Position{}), p.get(field::AprBirthLevel{}),
                                           p.get(field::AprMother{}), action});
     // derefinement (5.23): the daughters of each derefining (or deleted) mother, level by level
+    // the dying ids of every rank, sorted (they are few): a daughter may live on another rank
     for (int l = 1; l < levels_; ++l) {
       Kokkos::View<std::int64_t*, MemSpace> dying("ondine::APR::dying", n);
       int count = 0;
       Kokkos::parallel_scan("ondine::APR::dying", Kokkos::RangePolicy<ExecSpace>(0, n),
                             apr::DyingScan{action, p.get(field::AprBirthLevel{}), was_mother, p.get(field::GlobalId{}), dying, l - 1},
                             count);
-      if (count == 0) continue;
-      const auto ids = Kokkos::subview(dying, std::make_pair(0, count));
-      Kokkos::sort(ids);
+      const auto all = sorted_on_every_rank(Kokkos::subview(dying, std::make_pair(0, count)), comm, "ondine::APR::dying_all");
+      const int total = static_cast<int>(all.extent(0));
+      if (total == 0) continue;
       Kokkos::parallel_for("ondine::APR::remove_daughters", Kokkos::RangePolicy<ExecSpace>(0, n),
-                           apr::DaughterRemoval{action, p.get(field::AprBirthLevel{}), p.get(field::AprParent{}), dying, l, count});
+                           apr::DaughterRemoval{action, p.get(field::AprBirthLevel{}), p.get(field::AprParent{}), all, l, total});
     }
     apr::ActionScan::value_type totals;
     Kokkos::parallel_scan("ondine::APR::scan", Kokkos::RangePolicy<ExecSpace>(0, n),
                           apr::ActionScan{action, kept_index, refine_index}, totals);
     const int kept = totals.kept, nref = totals.refined;
-    deleted_ += n - kept;
-    refined_ += nref;
+    const int nd = nref << D;
+    Kokkos::View<int*, MemSpace> order("ondine::APR::order", kept + nd), refining("ondine::APR::refining", nref);
+    Kokkos::parallel_for("ondine::APR::order", Kokkos::RangePolicy<ExecSpace>(0, n),
+                         apr::NewOrder<D>{action, kept_index, refine_index, order, refining, kept});
+    // the refining mothers of all ranks by id: a family's ids are next_id + 2^D (its rank in that order) + c
+    Kokkos::View<std::int64_t*, MemSpace> mine("ondine::APR::refining_ids", nref);
+    {
+      const auto id = p.get(field::GlobalId{});
+      Kokkos::parallel_for("ondine::APR::refining_ids", Kokkos::RangePolicy<ExecSpace>(0, nref),
+                           KOKKOS_LAMBDA(const int k) { mine(k) = id(refining(k)); });
+    }
+    const auto families = sorted_on_every_rank(mine, comm, "ondine::APR::families");
+    const std::int64_t nfam = static_cast<std::int64_t>(families.extent(0));
+    deleted_ += comm.sum(static_cast<std::int64_t>(n - kept));
+    refined_ += nfam;
+    double dp[D + 1] = {};
     if (kept != n || nref > 0) {
-      const int nd = nref << D;
-      Kokkos::View<int*, MemSpace> order("ondine::APR::order", kept + nd), refining("ondine::APR::refining", nref);
-      Kokkos::parallel_for("ondine::APR::order", Kokkos::RangePolicy<ExecSpace>(0, n),
-                           apr::NewOrder<D>{action, kept_index, refine_index, order, refining, kept});
       Kokkos::View<double* [D + 1][D], Kokkos::LayoutRight, MemSpace> grad("ondine::APR::prolongation_gradient", nref);
       with_kernel<D>(kernel_, 1.0, [&](auto W1) {
         Kokkos::parallel_for("ondine::APR::prolongation_gradient", Kokkos::RangePolicy<ExecSpace>(0, nref),
@@ -153,27 +172,28 @@ class AdaptiveRefinement {
       });
       p.permute([&order](const auto& v) { return permuted(v, order); }, static_cast<std::size_t>(kept + nd));
       Kokkos::parallel_for("ondine::APR::daughters", Kokkos::RangePolicy<ExecSpace>(0, nref),
-                           apr::DaughterFill<D>{zones_, box, refining, kept_index, grad, kept, next_id_,
+                           apr::DaughterFill<D>{zones_, box, refining, kept_index, grad, kept, next_id_, families, static_cast<int>(nfam),
                                                 p.get(field::Position{}), p.get(field::Velocity{}), p.get(field::Density{}),
                                                 p.get(field::Mass{}), p.get(field::GlobalId{}), p.get(field::AprBirthLevel{}),
                                                 p.get(field::AprMother{}), p.get(field::AprParent{})});
-      double dp[D + 1];
       Kokkos::parallel_reduce("ondine::APR::family_momentum", Kokkos::RangePolicy<ExecSpace>(0, nref),
                               apr::FamilyMomentum<D>{D + 1, refining, kept_index, kept, p.get(field::Velocity{}), p.get(field::Mass{})},
                               dp);
-      for (int a = 0; a < D; ++a) momentum_change_[a] += dp[a];
-      momentum_scale_ += dp[D];
-      next_id_ += nd;
       n = kept + nd;
     }
-    sort_by_role(p, n);
+    for (int a = 0; a < D; ++a) momentum_change_[a] += comm.sum(dp[a]);
+    momentum_scale_ += comm.sum(dp[D]);
+    next_id_ += nfam << D;
     for (int z = 0; z < zones_.count; ++z)
       for (int k = 0; k < D; ++k) lo_at_update_[z][k] = zones_.lo[z][k];
     return n;
   }
 
-  // L. and Lx from a cell list of the current (sorted) positions.
-  void build_lists(const ParticleSet<D>& p, const CellList<D>& cells, const PeriodicBox<D>& box, int n) {
+  // L. and Lx for the n owned particles (sorted), from a cell list of the current
+  // positions of the owned particles and the halos (with their birth levels and roles).
+  // `reset_wide`: each guard tries its own radius R_f again (a new list; false when
+  // the lists are rebuilt only to follow a migration, and the flags are put back).
+  void build_lists(const ParticleSet<D>& p, const CellList<D>& cells, const PeriodicBox<D>& box, int n, bool reset_wide = true) {
     apr::LevelVisitor<D, false> dot{cells.grid, box, cells.cell_start, cells.sorted, p.get(field::Position{}),
                                     p.get(field::AprBirthLevel{}), p.get(field::AprGuard{}), p.get(field::AprMother{}), {}};
     for (int l = 0; l < kAprMaxLevels; ++l) dot.cut2[l] = (zones_.R[l] + skin_) * (zones_.R[l] + skin_);
@@ -187,7 +207,7 @@ class AdaptiveRefinement {
     if (static_cast<int>(used_.extent(0)) < n) {
       used_ = Kokkos::View<int*, MemSpace>("ondine::APR::guard_sources", n + n / 8);
       wide_ = Kokkos::View<int*, MemSpace>("ondine::APR::guard_wide", n + n / 8);
-    } else {
+    } else if (reset_wide) {
       Kokkos::deep_copy(wide_, 0);  // new roles: each guard tries R_f again
     }
     weights_valid_ = false;
@@ -226,13 +246,21 @@ class AdaptiveRefinement {
   }
   // positions moved (a new step): the shape functions are recomputed at the next interpolation
   void invalidate_weights() { weights_valid_ = false; }
+  // per guard (owned index): fitted at R_m since the last list build (kept across a migration)
+  const Kokkos::View<int*, MemSpace>& wide_flags() const { return wide_; }
 
- private:
-  void sort_by_role(ParticleSet<D>& p, int n) {
+  // The n owned particles sorted by (level, role) (halos dropped), and the level ranges.
+  // `roles`: the roles are computed from the zones (a bookkeeping); otherwise each
+  // particle keeps its role (a list rebuild in the middle of a step, after a migration).
+  void sort(ParticleSet<D>& p, int n, bool roles) {
     Kokkos::View<int*, MemSpace> key("ondine::APR::key", n), order("ondine::APR::sort_order", n);
-    Kokkos::parallel_for("ondine::APR::roles", Kokkos::RangePolicy<ExecSpace>(0, n),
-                         apr::Roles<D>{zones_, p.get(field::Position{}), p.get(field::AprBirthLevel{}), p.get(field::AprMother{}),
-                                       p.get(field::AprGuard{}), p.get(field::AprLevel{}), key});
+    if (roles)
+      Kokkos::parallel_for("ondine::APR::roles", Kokkos::RangePolicy<ExecSpace>(0, n),
+                           apr::Roles<D>{zones_, p.get(field::Position{}), p.get(field::AprBirthLevel{}), p.get(field::AprMother{}),
+                                         p.get(field::AprGuard{}), p.get(field::AprLevel{}), key});
+    else
+      Kokkos::parallel_for("ondine::APR::role_key", Kokkos::RangePolicy<ExecSpace>(0, n),
+                           apr::RoleKey{p.get(field::AprBirthLevel{}), p.get(field::AprGuard{}), key});
     int base = 0;
     for (int l = 0; l < levels_; ++l)
       for (int g = 0; g < 3; ++g) {
@@ -249,6 +277,19 @@ class AdaptiveRefinement {
       if (end_[l] > active_end_[l])
         Kokkos::parallel_for("ondine::APR::zero_guard_rates", Kokkos::RangePolicy<ExecSpace>(active_end_[l], end_[l]),
                              apr::ZeroGuardRates<D>{p.get(field::Acceleration{}), p.get(field::DensityRate{})});
+  }
+
+private:
+  // the values of `local` on every rank, sorted, on the device
+  static Kokkos::View<std::int64_t*, MemSpace> sorted_on_every_rank(const Kokkos::View<std::int64_t*, MemSpace>& local,
+                                                                     const Communicator& comm, const std::string& label) {
+    std::vector<std::int64_t> mine(local.extent(0));
+    Kokkos::deep_copy(Kokkos::View<std::int64_t*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(mine.data(), mine.size()), local);
+    std::vector<std::int64_t> all = comm.gather_all(mine);
+    std::sort(all.begin(), all.end());
+    Kokkos::View<std::int64_t*, MemSpace> out(label, all.size());
+    Kokkos::deep_copy(out, Kokkos::View<const std::int64_t*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(all.data(), all.size()));
+    return out;
   }
 
   // zone boxes at their current offsets (a nested zone moves with its outermost parent)

@@ -150,7 +150,12 @@ class Simulation {
   FluxArgs<D> state_flux_args(int n);
   void refinement_step_start();
   void refinement_bookkeeping();
-  void rebuild_level_lists();
+  // roles: computed at a bookkeeping, kept otherwise; several ranks: migration, sort by
+  // (level, role), halos with their levels and roles, then the lists
+  void rebuild_level_lists(bool roles, bool may_rebalance);
+  void relist_for_output();         // several ranks: migrate before an output, as if the lists had not been rebuilt
+  void refresh_guard_halos();       // several ranks: the interpolated fields of the guards' halo copies
+  void allocate_stage_storage();
   void update_free_surface_levels();
   std::vector<ProbeSample> sample_levels(const std::vector<Vec3>& points) const;
   void build_level_wall_cells();

@@ -53,9 +53,6 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
   skin_len_ = scene.neighbour_skin * (apr_on_ ? dx_finest : scene.dx);
   cutoff_ = R_ + skin_len_;
   if (apr_on_) {
-    if (comm_.size() > 1)
-      throw std::invalid_argument(scene.source_file + ": key 'refinement': adaptive particle refinement runs on one MPI rank "
-                                  "only (not distributed yet); run it without mpirun, or remove the key 'refinement'");
     if (restart)
       throw std::invalid_argument(scene.source_file + ": key 'refinement': a run with refinement zones cannot restart from "
                                   "a checkpoint yet (the APR fields are not checkpointed)");
@@ -126,17 +123,18 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
     if (walls) remove_outside_fluid();
   }
   n_own_ = static_cast<int>(p_.size());
-  if (apr_on_) {
-    // every particle starts as a coarse SPH particle; one bookkeeping pass per
-    // level creates the daughters of each nested level in turn
-    apr_ = AdaptiveRefinement<D>(scene_, box_, skin_len_);
-    apr_.initialise(p_, static_cast<std::int64_t>(n_own_));
-    for (int l = 1; l < apr_.levels(); ++l) refinement_bookkeeping();
-  }
   if (!comm_.serial()) {
     // first decomposition: weighted by the particles in each cell
     decompose(false);
     n_own_ = exchange_.migrate(p_, n_own_, orb_, box_, comm_);
+  }
+  if (apr_on_) {
+    // every particle starts as a coarse SPH particle; one bookkeeping pass per
+    // level creates the daughters of each nested level in turn (on several ranks,
+    // after the first decomposition: each rank refines the particles it owns)
+    apr_ = AdaptiveRefinement<D>(scene_, box_, skin_len_);
+    apr_.initialise(p_, comm_.sum(static_cast<std::int64_t>(n_own_)));
+    for (int l = 1; l < apr_.levels(); ++l) refinement_bookkeeping();
   }
   detail::with_eos<D>(scene_, [&](auto eos) {
     update_pressure<D>(eos, p_.get(field::Density{}), p_.get(field::Pressure{}), n_own_);
@@ -319,7 +317,7 @@ std::int64_t Simulation<D>::pair_count() const {
   const double R2 = R_ * R_;
   std::int64_t total = 0;
   if (!list_valid_) return 0;
-  if (apr_on_) return apr_.symmetric_list().total();  // L. pairs within R + skin
+  if (apr_on_) return comm_.sum(static_cast<std::int64_t>(apr_.symmetric_list().total()));  // L. pairs within R + skin
   Kokkos::parallel_reduce("ondine::PairCount", Kokkos::RangePolicy<ExecSpace>(0, n_own_),
                           KOKKOS_LAMBDA(const int i, std::int64_t& acc) {
                             const Vec<D> xi = load<D>(x, i);
@@ -349,7 +347,7 @@ void Simulation<D>::ensure_neighbours() {
 template <int D>
 void Simulation<D>::rebuild_neighbours(bool may_rebalance) {
   if (apr_on_) {
-    rebuild_level_lists();
+    rebuild_level_lists(false, may_rebalance);  // in the middle of a step: roles are kept
     return;
   }
   if (!comm_.serial()) {
@@ -395,7 +393,12 @@ void Simulation<D>::decompose(bool by_pairs) {
   const int ncell = global_grid_.cells();
   Kokkos::View<double*, MemSpace> work("ondine::Decomposition::work", ncell);
   Kokkos::parallel_for("ondine::Decomposition::work", Kokkos::RangePolicy<ExecSpace>(0, n_own_),
-                       CellWork<D>{global_grid_, box_, list_, p_.get(field::Position{}), work, by_pairs && list_valid_});
+                       CellWork<D>{global_grid_, box_, apr_on_ ? apr_.symmetric_list() : list_, p_.get(field::Position{}), work,
+                                   by_pairs && list_valid_});
+  // with refinement zones a guard's work is its interpolation sources (its Lx row)
+  if (apr_on_ && by_pairs && list_valid_)
+    Kokkos::parallel_for("ondine::Decomposition::guard_work", Kokkos::RangePolicy<ExecSpace>(0, n_own_),
+                         CellWork<D>{global_grid_, box_, apr_.guard_list(), p_.get(field::Position{}), work, true});
   std::vector<double> host(ncell);
   Kokkos::deep_copy(Kokkos::View<double*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(host.data(), ncell), work);
   comm_.sum_in_place(host);
@@ -570,17 +573,20 @@ double Simulation<D>::time_step() const {
   a2max = comm_.max(a2max);
   // one global step, bounded by the finest level that has SPH particles (with refinement zones)
   double R = R_;
-  if (apr_on_)
+  if (apr_on_) {
+    std::int64_t finest = 0;  // on any rank
     for (int l = 0; l < apr_.levels(); ++l)
-      if (apr_.active_end(l) > apr_.first(l)) R = apr_.R(l);
+      if (apr_.active_end(l) > apr_.first(l)) finest = l;
+    R = apr_.R(static_cast<int>(comm_.max(finest)));
+  }
   double dt = scene_.cfl_acoustic * R / cmax;
   if (scene_.nu > 0) dt = std::min(dt, scene_.cfl_viscous * R * R / scene_.nu);
   if (a2max > 0) dt = std::min(dt, scene_.cfl_force * std::sqrt(R / std::sqrt(a2max)));
   if (!walls_.empty() && scene_.viscous_term != ViscousTerm::None && apr_on_) {
     for (int l = 0; l < apr_.levels(); ++l) {
-      if (apr_.active_end(l) == apr_.first(l)) continue;
       double kmax = 0;
       const double Rl = apr_.R(l);
+      if (apr_.active_end(l) > apr_.first(l))
       with_kernel<D>(scene_.kernel, Rl, [&](auto W) {
         Kokkos::parallel_reduce("ondine::TimeStep::wall_viscous", Kokkos::RangePolicy<ExecSpace>(apr_.first(l), apr_.active_end(l)),
                                 WallViscousStiffness<D, decltype(W)>{walls_.points(), wall_cells(l), W, Rl * Rl, scene_.nu,
@@ -588,6 +594,7 @@ double Simulation<D>::time_step() const {
                                                                      p_.get(field::ShepardGamma{})},
                                 Kokkos::Max<double>(kmax));
       });
+      kmax = comm_.max(kmax);
       if (kmax > 0) dt = std::min(dt, 1.0 / kmax);
     }
   } else if (!walls_.empty() && scene_.viscous_term != ViscousTerm::None) {
@@ -632,19 +639,23 @@ void Simulation<D>::stage_update(double c_dt, double w, bool first) {
 }
 
 template <int D>
+void Simulation<D>::allocate_stage_storage() {
+  if (p_.has(field::StagePosition{})) return;
+  p_.allocate(field::StagePosition{});
+  p_.allocate(field::StageVelocity{});
+  p_.allocate(field::StageDensity{});
+  if (scene_.integrator == TimeIntegrator::RK4) {
+    p_.allocate(field::StagePositionSum{});
+    p_.allocate(field::StageVelocitySum{});
+    p_.allocate(field::StageDensitySum{});
+  }
+}
+
+template <int D>
 double Simulation<D>::step(double t_stop) {
   if (scene_.reorder_interval > 0 && steps_ % scene_.reorder_interval == 0) reorder_by_cell();
   if (apr_on_) refinement_step_start();
-  if (!p_.has(field::StagePosition{})) {
-    p_.allocate(field::StagePosition{});
-    p_.allocate(field::StageVelocity{});
-    p_.allocate(field::StageDensity{});
-    if (scene_.integrator == TimeIntegrator::RK4) {
-      p_.allocate(field::StagePositionSum{});
-      p_.allocate(field::StageVelocitySum{});
-      p_.allocate(field::StageDensitySum{});
-    }
-  }
+  allocate_stage_storage();
   Kokkos::deep_copy(p_.get(field::StagePosition{}), p_.get(field::Position{}));
   Kokkos::deep_copy(p_.get(field::StageVelocity{}), p_.get(field::Velocity{}));
   Kokkos::deep_copy(p_.get(field::StageDensity{}), p_.get(field::Density{}));
@@ -970,12 +981,16 @@ template <int D>
 void Simulation<D>::prepare_output() {
   // several ranks: owned positions are wrapped into the periodic box only at
   // migration; migrate now so that snapshots hold wrapped positions
-  if (!comm_.serial()) rebuild_neighbours(false);
+  if (!comm_.serial()) {
+    if (apr_on_) relist_for_output();
+    else rebuild_neighbours(false);
+  }
   // the stored state's own pressure and Shepard factor (the flux passes left last-stage values)
   refresh_halos();
   if (apr_on_) {
     ensure_neighbours();
     apr_.interpolate(p_, box_, true, walls_.segments());  // the guards of the stored state (5.24)
+    refresh_guard_halos();
   }
   const int n = static_cast<int>(p_.size());
   detail::with_eos<D>(scene_, [&](auto eos) {

@@ -9,19 +9,45 @@
 
 namespace ondine {
 
+// Several ranks (docs/parallel.md, "Refinement zones"): each rank refines and derefines
+// the particles it owns. Before: migration, and halos with their birth levels (the
+// prolongation gradient reads the level-r neighbours of a mother, owned or not);
+// after: a second migration (a daughter may lie in another rank's cell), the sort,
+// halos with levels and roles, the lists. The dying and refining mothers' ids are
+// gathered on every rank inside AdaptiveRefinement::update.
 template <int D>
 void Simulation<D>::refinement_bookkeeping() {
-  cells_.build(local_grid_, p_.get(field::Position{}), n_own_);  // for the prolongation gradient
-  n_own_ = apr_.update(p_, cells_, box_, n_own_);
+  if (!comm_.serial()) {
+    n_own_ = exchange_.migrate(p_, n_own_, orb_, box_, comm_);
+    exchange_.build_halos(p_, n_own_, orb_, box_, comm_);
+    exchange_.refresh(p_, comm_, field::AprBirthLevel{});
+  }
+  cells_.build(local_grid_, p_.get(field::Position{}), static_cast<int>(p_.size()));  // for the prolongation gradient
+  n_own_ = apr_.update(p_, cells_, box_, n_own_, comm_);
   list_valid_ = false;
-  rebuild_level_lists();
+  rebuild_level_lists(true, true);
   apr_.interpolate(p_, box_, true, walls_.segments());  // passive guards: once per bookkeeping
+  refresh_guard_halos();
 }
 
+// The particles sorted by (level, role) and the lists L. and Lx over owned + halo
+// particles. `roles`: recomputed from the zones (a bookkeeping), else kept (a rebuild
+// within a step). One rank: no migration, and the order is already right without
+// new roles. Several ranks: migration first (received particles come last, so the
+// sort is redone), then halos that carry their birth level and role (the lists and
+// the guard interpolation select partners by them); then the balance check of the
+// uniform path, the work of a rank being its L. and Lx entries.
 template <int D>
-void Simulation<D>::rebuild_level_lists() {
+void Simulation<D>::rebuild_level_lists(bool roles, bool may_rebalance) {
+  if (!comm_.serial()) n_own_ = exchange_.migrate(p_, n_own_, orb_, box_, comm_);
+  if (roles || !comm_.serial()) apr_.sort(p_, n_own_, roles);
+  if (!comm_.serial()) {
+    exchange_.build_halos(p_, n_own_, orb_, box_, comm_);
+    exchange_.refresh(p_, comm_, field::AprBirthLevel{}, field::AprGuard{});
+    halos_fresh_ = true;
+  }
   const auto x = p_.get(field::Position{});
-  cells_.build(local_grid_, x, n_own_);
+  cells_.build(local_grid_, x, static_cast<int>(p_.size()));
   apr_.build_lists(p_, cells_, box_, n_own_);
   if (scene_.neighbour_skin > 0) {
     if (x_at_build_.extent(0) != x.extent(0))
@@ -30,6 +56,77 @@ void Simulation<D>::rebuild_level_lists() {
   }
   list_valid_ = true;
   ++builds_;
+  if (comm_.serial()) return;
+  std::vector<double> work;
+  const std::int64_t mine = scene_.balance_by_pairs
+                                ? static_cast<std::int64_t>(apr_.symmetric_list().total() + apr_.guard_list().total())
+                                : n_own_;
+  for (std::int64_t w : comm_.gather_all(mine)) work.push_back(static_cast<double>(w));
+  tau_ = balance_indicator(work);
+  if (may_rebalance && tau_ < std::min(scene_.rebalance_threshold, achieved_tau_ - 0.05)) {
+    const double before = tau_;
+    decompose(scene_.balance_by_pairs);
+    ++rebalances_;
+    rebuild_level_lists(false, false);  // the roles just computed are kept
+    achieved_tau_ = tau_;
+    if (comm_.rank() == 0)
+      std::fprintf(stderr, "ondine: step %lld: rebalanced, tau %.3f -> %.3f\n", static_cast<long long>(steps_), before, tau_);
+  }
+}
+
+// Several ranks, before an output: owned positions are wrapped into the periodic box
+// only at a migration, so the output migrates; but a one-rank run does not rebuild its
+// lists there, and with refinement zones a list build is not neutral (the next
+// bookkeeping comes with the Verlet criterion, and a guard's choice of radius is reset).
+// So the reference positions of the Verlet criterion and the guards' radius flags
+// travel with their particles (in the stage storage, free between steps) and are put
+// back, and the lists' validity is kept: the run goes on as if nothing had happened.
+template <int D>
+void Simulation<D>::relist_for_output() {
+  allocate_stage_storage();
+  const bool valid = list_valid_;
+  const auto xs = p_.get(field::StagePosition{});
+  const auto ws = p_.get(field::StageDensity{});
+  const int n = n_own_;
+  if (valid) {
+    const auto xb = x_at_build_;
+    const auto wide = apr_.wide_flags();
+    const bool verlet = scene_.neighbour_skin > 0;
+    Kokkos::parallel_for("ondine::APR::stash", Kokkos::RangePolicy<ExecSpace>(0, n), KOKKOS_LAMBDA(const int i) {
+      for (int k = 0; k < D; ++k) xs(i, k) = verlet ? xb(i, k) : 0.0;
+      ws(i) = wide.extent(0) > static_cast<std::size_t>(i) ? wide(i) : 0;
+    });
+  }
+  n_own_ = exchange_.migrate(p_, n_own_, orb_, box_, comm_);
+  apr_.sort(p_, n_own_, false);
+  exchange_.build_halos(p_, n_own_, orb_, box_, comm_);
+  exchange_.refresh(p_, comm_, field::AprBirthLevel{}, field::AprGuard{});
+  halos_fresh_ = true;
+  const auto x = p_.get(field::Position{});
+  cells_.build(local_grid_, x, static_cast<int>(p_.size()));
+  apr_.build_lists(p_, cells_, box_, n_own_, false);
+  if (valid) {
+    const auto xs2 = p_.get(field::StagePosition{});
+    const auto ws2 = p_.get(field::StageDensity{});
+    const auto wide = apr_.wide_flags();
+    Kokkos::parallel_for("ondine::APR::unstash", Kokkos::RangePolicy<ExecSpace>(0, n_own_),
+                         KOKKOS_LAMBDA(const int i) { wide(i) = static_cast<int>(ws2(i)); });
+    if (scene_.neighbour_skin > 0) {
+      if (x_at_build_.extent(0) != x.extent(0))
+        x_at_build_ = field_view_t<field::Position, D>("ondine::NeighbourList::x_at_build", x.extent(0));
+      Kokkos::deep_copy(x_at_build_, xs2);
+    }
+  }
+  list_valid_ = valid;
+}
+
+template <int D>
+void Simulation<D>::refresh_guard_halos() {
+  if (comm_.serial()) return;
+  if (p_.has(field::DensityGradient{}))
+    exchange_.refresh(p_, comm_, field::Velocity{}, field::Density{}, field::DensityGradient{});
+  else
+    exchange_.refresh(p_, comm_, field::Velocity{}, field::Density{});
 }
 
 // At the start of a step: the zones at time t (moving, or re-centred on their
@@ -52,9 +149,19 @@ void Simulation<D>::refinement_step_start() {
     typename Kokkos::MaxLoc<double, int>::value_type best;
     Kokkos::parallel_reduce("ondine::APR::zone_criterion", Kokkos::RangePolicy<ExecSpace>(0, n), f,
                             Kokkos::MaxLoc<double, int>(best));
-    if (!(best.val > 0)) return false;
-    auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), Kokkos::subview(x, best.loc, Kokkos::ALL));
-    for (int k = 0; k < D; ++k) at[k] = h(k);
+    // (value, position) of every rank; the largest wins (the lowest rank on a tie)
+    std::vector<double> mine(D + 1, 0.0);
+    mine[0] = best.val > 0 ? best.val : -1.0;
+    if (best.val > 0) {
+      auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), Kokkos::subview(x, best.loc, Kokkos::ALL));
+      for (int k = 0; k < D; ++k) mine[1 + k] = h(k);
+    }
+    const std::vector<double> all = comm_.gather_all(mine);
+    int win = 0;
+    for (int r = 1; r < comm_.size(); ++r)
+      if (all[r * (D + 1)] > all[win * (D + 1)]) win = r;
+    if (!(all[win * (D + 1)] > 0)) return false;
+    for (int k = 0; k < D; ++k) at[k] = all[win * (D + 1) + 1 + k];
     return true;
   });
   bool rebuild = !list_valid_ || moved > 0.5 * skin_len_;
@@ -62,7 +169,7 @@ void Simulation<D>::refinement_step_start() {
     double d2max = 0;
     Kokkos::parallel_reduce("ondine::NeighbourList::displacement", Kokkos::RangePolicy<ExecSpace>(0, n),
                             MaxDisplacement2<D>{box_, x, x_at_build_}, Kokkos::Max<double>(d2max));
-    rebuild = d2max >= 0.25 * skin_len_ * skin_len_;
+    rebuild = comm_.max(d2max) >= 0.25 * skin_len_ * skin_len_;
   }
   if (rebuild) refinement_bookkeeping();
 }
@@ -70,18 +177,22 @@ void Simulation<D>::refinement_step_start() {
 template <int D>
 void Simulation<D>::evaluate_levels() {
   ensure_neighbours();  // lists only: roles change at a step start (refinement_step_start)
-  const int n = n_own_;
+  refresh_halos();      // several ranks: this stage's halo sources of the guards
+  const int n = n_own_, n_all = static_cast<int>(p_.size());
   if (!walls_.empty()) update_walls(stage_time_);
   apr_.interpolate(p_, box_, false, walls_.segments());  // guards from this stage's SPH particles (5.24)
+  // several ranks: the guards' halo copies (their density gradient travels after the gradient pass)
+  if (!comm_.serial()) exchange_.refresh(p_, comm_, field::Velocity{}, field::Density{});
   FluxArgs<D> a = state_flux_args(n);
   a.list = apr_.symmetric_list();
   // with no-slip walls the consistent Laplacian's weights are solved per level
   const bool morris_walls = consistent_laplacian();
-  detail::with_eos<D>(scene_, [&](auto eos) { update_pressure<D>(eos, a.rho, a.P, n); });
+  detail::with_eos<D>(scene_, [&](auto eos) { update_pressure<D>(eos, a.rho, a.P, n_all); });
   if (scene_.background_pressure) {
     double pmin = 0;
     Kokkos::parallel_reduce("ondine::BackgroundPressure::min", Kokkos::RangePolicy<ExecSpace>(0, n), apr::MinOf{a.P},
                             Kokkos::Min<double>(pmin));
+    pmin = comm_.min(pmin);
     a.P_min = pmin < 0 ? -pmin : 0.0;
   }
   const bool walls = !walls_.empty();
@@ -112,6 +223,7 @@ void Simulation<D>::evaluate_levels() {
       });
   }
   // the guards' density gradient came with their interpolation (GuardInterpolation.hpp)
+  if (gradient && !comm_.serial()) exchange_.refresh(p_, comm_, field::DensityGradient{});
   for (int l = 0; l < apr_.levels(); ++l) {
     const int b = apr_.first(l), e = apr_.active_end(l);
     if (e == b) continue;
@@ -197,7 +309,7 @@ std::vector<ProbeSample> Simulation<D>::sample_levels(const std::vector<Vec3>& p
         f.what = what;
         double acc = 0;
         Kokkos::parallel_reduce("ondine::Probe", Kokkos::RangePolicy<ExecSpace>(0, n_own_), f, acc);
-        return acc;
+        return comm_.sum(acc);
       };
       s.shepard = sum(0);
       if (s.shepard > 0) {
