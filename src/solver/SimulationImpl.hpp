@@ -584,9 +584,8 @@ double Simulation<D>::time_step() const {
   if (a2max > 0) dt = std::min(dt, scene_.cfl_force * std::sqrt(R / std::sqrt(a2max)));
   if (!walls_.empty() && scene_.viscous_term != ViscousTerm::None && apr_on_) {
     for (int l = 0; l < apr_.levels(); ++l) {
-      double kmax = 0;
+      double kmax = 0;  // 0 on a rank without SPH particles of level l (it takes part in the all-reduce)
       const double Rl = apr_.R(l);
-      if (apr_.active_end(l) > apr_.first(l))
       with_kernel<D>(scene_.kernel, Rl, [&](auto W) {
         Kokkos::parallel_reduce("ondine::TimeStep::wall_viscous", Kokkos::RangePolicy<ExecSpace>(apr_.first(l), apr_.active_end(l)),
                                 WallViscousStiffness<D, decltype(W)>{walls_.points(), wall_cells(l), W, Rl * Rl, scene_.nu,
