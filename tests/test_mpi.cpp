@@ -199,3 +199,18 @@ TEST_CASE("ORB balances the work and the decomposition covers the grid exactly o
   // tau >= (1 - 2 x 0.13) / (1 + 2 x 0.13) = 0.59
   CHECK(sim.balance() >= 0.59);
 }
+
+// APR gathers the dying and the refining mothers' ids of every rank (AdaptiveRefinement::update)
+TEST_CASE("gather_all of vectors concatenates every rank's values in rank order, empty ones included", "[mpi]") {
+  const Communicator comm;
+  std::vector<std::int64_t> mine;
+  for (int k = 0; k < comm.rank() % 3; ++k) mine.push_back(100 * comm.rank() + k);  // rank 0 sends nothing
+  const std::vector<std::int64_t> all = comm.gather_all(mine);
+  std::vector<std::int64_t> expect;
+  for (int r = 0; r < comm.size(); ++r)
+    for (int k = 0; k < r % 3; ++k) expect.push_back(100 * r + k);
+  CHECK(all == expect);
+  const std::vector<double> d = comm.gather_all(std::vector<double>{0.5 + comm.rank()});
+  REQUIRE(static_cast<int>(d.size()) == comm.size());
+  for (int r = 0; r < comm.size(); ++r) CHECK(d[r] == 0.5 + r);
+}
