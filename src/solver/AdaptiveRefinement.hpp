@@ -60,6 +60,7 @@ class AdaptiveRefinement {
   const RefinementZones<D>& zones() const { return zones_; }
   std::int64_t refined() const { return refined_; }    // mothers refined so far
   std::int64_t deleted() const { return deleted_; }    // daughters deleted so far
+  std::int64_t families_moved() const { return families_moved_; }  // moved off a wall (DaughterWallClearance)
   double interpolation_seconds() const { return interp_seconds_; }
   // sum over all refinements of sum_f m_f u_f - m_m u_m (component a), and of m_m |u_m|
   double momentum_change(int a) const { return momentum_change_[a]; }
@@ -110,7 +111,8 @@ class AdaptiveRefinement {
   // Refinement and derefinement (classify, prolongation, daughters), then the roles
   // and the sort by (level, guard). `cells` must hold the current positions.
   // Returns the new particle count.
-  int update(ParticleSet<D>& p, const CellList<D>& cells, const PeriodicBox<D>& box, int n) {
+  int update(ParticleSet<D>& p, const CellList<D>& cells, const PeriodicBox<D>& box, int n,
+             const WallSegments<D>& walls = WallSegments<D>()) {
     Kokkos::View<int*, MemSpace> action("ondine::APR::action", n), kept_index("ondine::APR::kept_index", n),
         refine_index("ondine::APR::refine_index", n);
     // the mother flags before this pass (a deleted mother takes its daughters along)
@@ -157,6 +159,14 @@ class AdaptiveRefinement {
                                                 p.get(field::Position{}), p.get(field::Velocity{}), p.get(field::Density{}),
                                                 p.get(field::Mass{}), p.get(field::GlobalId{}), p.get(field::AprBirthLevel{}),
                                                 p.get(field::AprMother{}), p.get(field::AprParent{})});
+      if (walls.count > 0) {
+        long moved = 0;
+        Kokkos::parallel_reduce("ondine::APR::daughter_wall_clearance", Kokkos::RangePolicy<ExecSpace>(0, nref),
+                                apr::DaughterWallClearance<D>{walls, box, zones_, refining, kept_index, kept,
+                                                              p.get(field::Position{}), p.get(field::AprBirthLevel{})},
+                                moved);
+        families_moved_ += moved;
+      }
       double dp[D + 1];
       Kokkos::parallel_reduce("ondine::APR::family_momentum", Kokkos::RangePolicy<ExecSpace>(0, nref),
                               apr::FamilyMomentum<D>{D + 1, refining, kept_index, kept, p.get(field::Velocity{}), p.get(field::Mass{})},
@@ -277,7 +287,7 @@ class AdaptiveRefinement {
   Kokkos::View<int*, MemSpace> wide_;  // per guard: fitted at R_m since the last list build (GuardWeights)
   Kokkos::View<int*, MemSpace> used_;  // per guard: its Lx entries within the interpolation radius (first in its row)
   bool weights_valid_ = false;
-  std::int64_t next_id_ = 0, refined_ = 0, deleted_ = 0;
+  std::int64_t next_id_ = 0, refined_ = 0, deleted_ = 0, families_moved_ = 0;
   double interp_seconds_ = 0;
   double momentum_change_[D] = {}, momentum_scale_ = 0;
 };

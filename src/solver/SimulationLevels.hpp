@@ -12,7 +12,7 @@ namespace ondine {
 template <int D>
 void Simulation<D>::refinement_bookkeeping() {
   cells_.build(local_grid_, p_.get(field::Position{}), n_own_);  // for the prolongation gradient
-  n_own_ = apr_.update(p_, cells_, box_, n_own_);
+  n_own_ = apr_.update(p_, cells_, box_, n_own_, walls_.segments());
   list_valid_ = false;
   rebuild_level_lists();
   apr_.interpolate(p_, box_, true, walls_.segments());  // passive guards: once per bookkeeping
@@ -129,17 +129,18 @@ void Simulation<D>::evaluate_levels() {
         Kokkos::parallel_for("ondine::NFM::WallFlux", Kokkos::RangePolicy<ExecSpace>(b, e),
                              WallFluxPass<D, decltype(W), true, true>{walls_.points(), wall_cells(l), W, Rl * Rl, a.body, scene_.nu, weos,
                                                                       0.05 * Rl, box_, a.P_min, a.x, a.u, a.rho, a.P, a.grad_rho,
-                                                                      p_.get(field::ShepardGamma{}), a.du, a.drho, laplacian_weights_});
+                                                                      p_.get(field::ShepardGamma{}), a.du, a.drho, laplacian_weights_, a.list, a.m,
+                                                                      0.5 * Rl / scene_.R_over_dx});
       else if (scene_.viscous_term != ViscousTerm::None)
         Kokkos::parallel_for("ondine::NFM::WallFlux", Kokkos::RangePolicy<ExecSpace>(b, e),
                              WallFluxPass<D, decltype(W), true, false>{walls_.points(), wall_cells(l), W, Rl * Rl, a.body, scene_.nu, weos,
                                                                        0.05 * Rl, box_, a.P_min, a.x, a.u, a.rho, a.P, a.grad_rho,
-                                                                       p_.get(field::ShepardGamma{}), a.du, a.drho, {}});
+                                                                       p_.get(field::ShepardGamma{}), a.du, a.drho, {}, a.list, a.m, 0.5 * Rl / scene_.R_over_dx});
       else
         Kokkos::parallel_for("ondine::NFM::WallFlux", Kokkos::RangePolicy<ExecSpace>(b, e),
                              WallFluxPass<D, decltype(W), false, false>{walls_.points(), wall_cells(l), W, Rl * Rl, a.body, scene_.nu, weos,
                                                                         0.05 * Rl, box_, a.P_min, a.x, a.u, a.rho, a.P, a.grad_rho,
-                                                                        p_.get(field::ShepardGamma{}), a.du, a.drho, {}});
+                                                                        p_.get(field::ShepardGamma{}), a.du, a.drho, {}, a.list, a.m, 0.5 * Rl / scene_.R_over_dx});
     });
   }
 }
