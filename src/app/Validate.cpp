@@ -118,14 +118,14 @@ const std::vector<ValidationCase>& catalogue() {
       // cut) and the wall time of the APR run over the fine run's are added to the APR run's figures.
       {"apr_poiseuille_re1_2d", "cases/poiseuille_re1_2d.yaml", 1.0,
        {{0.025, false, true, "coarse"}, {0.025, false, true, "apr", "cases/poiseuille_re1_apr_2d.yaml"}, {0.0125, false, true, "fine"}},
-       stable({{"velocity_l2_near_wall", 0.0135}, {"velocity_l2", 0.005}}), {}, {}, {"near_wall_error_over_fine", "wall_time_over_fine"},
+       stable({{"velocity_l2_near_wall", 0.0135}, {"velocity_l2", 0.005}}), {}, {}, {"near_wall_error_over_fine", "wall_time_over_fine", "cpu_time_over_fine"},
        {"time.duration=0.5", "time.output_interval=0.25"}},
       // 2D dam break with a refinement box at the foot of the right wall, where the surge hits it
       // (to t = 0.35 s; quick: 0.25 s): the front against Martin & Moyce, and the pressure at the
       // right-wall probe against the fine run's (relative L2 over time)
       {"apr_dam_break_2d", "cases/dam_break_impact_2d.yaml", 0.05715,
        {{0.002286, false, true, "coarse"}, {0.002286, false, true, "apr", "cases/dam_break_apr_2d.yaml"}, {0.001143, false, true, "fine"}},
-       stable({{"front_max_relative_error", 0.2}}), {}, {}, {"probe_pressure_difference_vs_fine", "wall_time_over_fine"},
+       stable({{"front_max_relative_error", 0.2}}), {}, {}, {"probe_pressure_difference_vs_fine", "wall_time_over_fine", "cpu_time_over_fine"},
        {"time.duration=0.25"}},
   };
   return c;
@@ -316,6 +316,7 @@ int run_validation(const ValidateOptions& opt) {
       run["particles"] = rep.particles;
       run["steps"] = rep.steps;
       run["wall_seconds"] = rep.wall_seconds;
+      run["cpu_seconds"] = rep.cpu_seconds;
       run["particle_steps_per_second"] = rep.wall_seconds > 0 ? rep.particles * static_cast<double>(rep.steps) / rep.wall_seconds : 0.0;
       run["errors"] = rep.errors;
       run["status"] = rep.status;
@@ -355,6 +356,10 @@ int run_validation(const ValidateOptions& opt) {
           if (e.contains("velocity_l2_near_wall") && ef.contains("velocity_l2_near_wall"))
             e["near_wall_error_over_fine"] = e["velocity_l2_near_wall"].get<double>() / ef["velocity_l2_near_wall"].get<double>();
           e["wall_time_over_fine"] = run["wall_seconds"].get<double>() / (*fine)["wall_seconds"].get<double>();
+          // the same ratio in CPU time: on a shared machine the two runs meet different loads, which
+          // inflate their wall times but not (with a fixed thread count) their CPU times
+          if (run.contains("cpu_seconds") && (*fine).value("cpu_seconds", 0.0) > 0)
+            e["cpu_time_over_fine"] = run["cpu_seconds"].get<double>() / (*fine)["cpu_seconds"].get<double>();
           // the last probe's pressure over time (probes.csv), relative L2 difference to the fine run's
           const std::string pa = opt.out_dir + "/" + run["dir"].get<std::string>() + "/probes.csv";
           const std::string pb = opt.out_dir + "/" + (*fine)["dir"].get<std::string>() + "/probes.csv";
@@ -374,21 +379,23 @@ int run_validation(const ValidateOptions& opt) {
           }
           // issue 7's criterion, at the full level (the steady Poiseuille of thesis Table 5.3; the
           // quick level stops in the start-up transient, which the coarse core carries): the APR
-          // run's near-wall error within 10 % of the fine run's, at under 70 % of its wall time
+          // run's near-wall error within 10 % of the fine run's, at under 70 % of its run time,
+          // checked on CPU time (wall time where CPU time is missing), which other load does not inflate
           bool criterion = true;
+          const char* time_ratio = e.contains("cpu_time_over_fine") ? "cpu_time_over_fine" : "wall_time_over_fine";
           if (opt.level == "full" && run.value("variant", "") == "apr" && e.contains("near_wall_error_over_fine")) {
             run["thresholds"]["near_wall_error_over_fine"] = 1.1;
-            run["thresholds"]["wall_time_over_fine"] = 0.7;
-            criterion = e["near_wall_error_over_fine"].get<double>() <= 1.1 && e["wall_time_over_fine"].get<double>() <= 0.7;
+            run["thresholds"][time_ratio] = 0.7;
+            criterion = e["near_wall_error_over_fine"].get<double>() <= 1.1 && e[time_ratio].get<double>() <= 0.7;
             if (!criterion) {
               run["passed"] = false;
               all_passed = false;
             }
           }
           md << "\n" << c->name << " / " << run["variant"].get<std::string>() << " against fine:";
-          for (const char* k : {"near_wall_error_over_fine", "wall_time_over_fine", "probe_pressure_difference_vs_fine"})
+          for (const char* k : {"near_wall_error_over_fine", "wall_time_over_fine", "cpu_time_over_fine", "probe_pressure_difference_vs_fine"})
             if (e.contains(k)) md << " " << k << " " << fmt(e[k].get<double>()) << ";";
-          if (!criterion) md << " **fails** (near_wall_error_over_fine <= 1.1 and wall_time_over_fine <= 0.7)";
+          if (!criterion) md << " **fails** (near_wall_error_over_fine <= 1.1 and " << time_ratio << " <= 0.7)";
           md << "\n";
         }
       }
