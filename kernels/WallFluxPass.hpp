@@ -13,6 +13,19 @@
 // (kernels/ConsistentLaplacian.hpp), as the fluid pairs do.
 // Then every sum is divided by gamma_i:
 //   du_i = g + (fluid + wall sums) / gamma_i,  drho_i = (fluid + wall sums) / gamma_i.
+//
+// Wall-ward consistency correction (not in the seed): for a uniform pressure P the two
+// sums give -(2P/rho_i) E_i with E_i = sum_P w_j grad_i W_ij + sum_S s_q W_iq n_out,
+// zero in the continuum but not on a particle closer to a wall than the lattice's
+// dx/2: at 0.01 dx from both walls of a corner E = (+0.062, +0.062)/dx (Wendland C2,
+// R = 3 dx), so a uniform pressure presses the particle into the corner and (4.25)
+// drains its density until its neighbours collapse onto it (docs/validation.md,
+// near-wall start). For a particle whose nearest wall point is closer than dx/2 the
+// part of -(2(P_i + P_min)/rho_i) E_i along G = sum_S s_q W_iq n_out (the direction
+// out of the fluid) is removed when it points into the wall, blended in linearly
+// from 0 at dx/2 to 1 at dx/4. The part pointing away from the wall (a flat wall's
+// first row at 0.01 dx: E = -0.074/dx along n_out) is kept: it restores the clearance.
+// The extra neighbour loop runs only for those particles.
 #include "kernels/ConsistentLaplacian.hpp"
 #include "kernels/NeighbourLoops.hpp"
 #include "kernels/WallPressure.hpp"
@@ -42,6 +55,18 @@ struct WallFluxPass {
   field_view_t<field::Acceleration, D> du;
   field_view_t<field::DensityRate, D> drho;
   LaplacianWeightView<D> weights;  // (A_i, b_i) of the consistent Laplacian (DensityGradientPass)
+  NeighbourList<D> list;           // the flux pass's list (the wall-ward correction's sum_P)
+  field_view_t<field::Mass, D> m;
+  double clearance;                // dx / 2 of the level: the wall-ward correction acts closer than this
+
+  // E_i's fluid part sum_P w_j grad_i W_ij (only for particles next to a wall).
+  KOKKOS_INLINE_FUNCTION Vec<D> fluid_gradient_sum(const int i, const Vec<D>& xi) const {
+    Vec<D> S = Vec<D>::zero();
+    for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>& xij, const double r) {
+      S += (m(j) / rho(j) * W.derivative(r) / r) * xij;
+    });
+    return S;
+  }
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<D> xi = load<D>(x, i), ui = load<D>(u, i);
@@ -49,11 +74,13 @@ struct WallFluxPass {
     const double c2 = eos.c2(rho_i);
     const double c_i = kmath::sqrt(c2);
     const Vec<D> g_rho = load<D>(grad_rho, i);
-    Vec<D> acc = Vec<D>::zero();
-    double dr = 0.0;
+    Vec<D> acc = Vec<D>::zero(), G = Vec<D>::zero();
+    double dr = 0.0, r_min = clearance;
     for_each_point_within<D>(wall_cells, box, wall.x, xi, R2, [&](const int q, const Vec<D>& xiq, const double r) {
       const double Wq = W.value(r) * wall.s(q);
       const Vec<D> n = load<D>(wall.n_out, q);
+      G += Wq * n;
+      if (r < r_min) r_min = r;
       const Vec<D> uq = load<D>(wall.u, q);
       const double P_p = normal_flux_pressure<D>(rho_i, P_i, c2, c_i, g_rho, xiq, ui, uq, n);
       // (2.105) shifts P_i + P_j by 2 P_min in the fluid sum; its wall counterpart keeps
@@ -68,6 +95,17 @@ struct WallFluxPass {
         }
       }
     });
+    if (r_min < clearance) {  // wall-ward consistency correction (see the head of this file)
+      const double G2 = norm2(G);
+      if (G2 > 0.0) {
+        const Vec<D> E = fluid_gradient_sum(i, xi) + G;
+        const double f = -2.0 * (P_i + P_min) / rho_i * dot(E, G) / kmath::sqrt(G2);  // along G/|G|
+        if (f > 0.0) {
+          const double blend = kmath::fmin(1.0, 2.0 * (clearance - r_min) / clearance);
+          acc -= (blend * f / kmath::sqrt(G2)) * G;
+        }
+      }
+    }
     const double inv_gamma = 1.0 / gamma(i);
     for (int k = 0; k < D; ++k) du(i, k) = body[k] + (du(i, k) - body[k] + acc[k]) * inv_gamma;
     drho(i) = (drho(i) + dr) * inv_gamma;

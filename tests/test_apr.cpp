@@ -94,6 +94,48 @@ TEST_CASE("APR refinement conserves mass exactly and momentum to round-off (prol
   CHECK(std::abs(dpy) <= 1e-12 * scale);
 }
 
+TEST_CASE("APR: a family refined next to a wall lies on the fluid side, on a fine lattice", "[apr]") {
+  // Still water whose first row sits 0.1 dx above the floor (the tip of a surge sliding on it):
+  // the daughters at x_m + dx_m/4 (+-1, +-1) of a mother 0.1 dx_m high would lie 0.15 dx_m under
+  // the floor. Each such family is moved up until its centre is dx_m/2 from the floor, so its
+  // daughters sit dx_f/2 and 3 dx_f/2 above it (kernels/apr/Refinement.hpp, DaughterWallClearance).
+  const std::string y =
+      "dimension: 2\n"
+      "domain: {min: [-0.01, -0.01], max: [0.41, 0.3]}\n"
+      "fluid: {rho0: 1000, sound_speed: 10}\n"
+      "discretisation: {dx: 0.02, R_over_dx: 3}\n"
+      "walls: [{name: tank, points: [[0, 0.3], [0, 0], [0.4, 0], [0.4, 0.3]], closed: false, fluid_side: left, condition: slip}]\n"
+      "fluid_blocks: [{min: [-0.008, -0.008], max: [0.392, 0.192], wall_clearance: 0.05}]\n"
+      "forces: {gravity: [0, -9.81]}\n"
+      "scheme: {time_integrator: rk4}\n"
+      "time: {duration: 1, output_interval: 1}\n";
+  const Scene coarse = parse_case(y, "floor.yaml");
+  const Scene refined = parse_case(y + "refinement: {zones: [{name: floor, min: [0.1, -0.01], max: [0.3, 0.1]}]}\n", "floor.yaml");
+  Simulation<2> a(coarse), b(refined);
+  REQUIRE(b.refinement().refined() > 0);
+  const HostState h = host_state(b);
+  const double dx_f = 0.01;
+  double lowest_daughter = 1e30, lowest_mother = 1e30;
+  int daughters = 0;
+  for (std::size_t i = 0; i < b.particles().size(); ++i) {
+    if (h.birth(i) == 1) {
+      lowest_daughter = std::min(lowest_daughter, h.x(i, 1));
+      ++daughters;
+    }
+    if (h.mother(i) == 1) lowest_mother = std::min(lowest_mother, h.x(i, 1));
+  }
+  const double dm = b.diagnostics().mass, da = a.diagnostics().mass;
+  std::printf("APR next to a floor: %lld families (%d daughters), %lld moved off the wall; lowest mother %.3g dx_f, "
+              "lowest daughter %.6g dx_f above the floor; leaf mass rel. difference %.2e\n",
+              static_cast<long long>(b.refinement().refined()), daughters,
+              static_cast<long long>(b.refinement().families_moved()), lowest_mother / dx_f, lowest_daughter / dx_f,
+              std::abs(dm - da) / da);
+  CHECK(lowest_mother == Approx(0.002).margin(1e-12));    // the mothers of the first row: 0.2 dx_f high ...
+  CHECK(b.refinement().families_moved() >= 10);            // ... 10 of them inside the zone's floor span
+  CHECK(lowest_daughter == Approx(0.5 * dx_f).margin(1e-12));  // ... their daughters at dx_f / 2, not behind the floor
+  CHECK(std::abs(dm - da) <= 1e-12 * da);
+}
+
 TEST_CASE("APR: mass is conserved to 1e-12 while a uniform flow is refined and derefined", "[apr]") {
   Simulation<2> sim(uniform_flow_scene(1.0, true));
   const double m0 = sim.diagnostics().mass;

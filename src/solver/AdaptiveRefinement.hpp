@@ -62,6 +62,7 @@ class AdaptiveRefinement {
   const RefinementZones<D>& zones() const { return zones_; }
   std::int64_t refined() const { return refined_; }    // mothers refined so far
   std::int64_t deleted() const { return deleted_; }    // daughters deleted so far
+  std::int64_t families_moved() const { return families_moved_; }  // moved off a wall (DaughterWallClearance)
   double interpolation_seconds() const { return interp_seconds_; }
   // sum over all refinements of sum_f m_f u_f - m_m u_m (component a), and of m_m |u_m|
   double momentum_change(int a) const { return momentum_change_[a]; }
@@ -117,8 +118,10 @@ class AdaptiveRefinement {
   // Collective over `comm`: the dying mothers' ids and the refining mothers' ids are
   // gathered on every rank (a daughter may live on another rank than its mother;
   // daughter ids follow the global order of their mothers' ids, so they do not
-  // depend on the rank count). Returns the new owned count (halos dropped).
-  int update(ParticleSet<D>& p, const CellList<D>& cells, const PeriodicBox<D>& box, int n, const Communicator& comm) {
+  // depend on the rank count). Families next to a wall are moved off it (`walls`).
+  // Returns the new owned count (halos dropped).
+  int update(ParticleSet<D>& p, const CellList<D>& cells, const PeriodicBox<D>& box, int n, const Communicator& comm,
+             const WallSegments<D>& walls = WallSegments<D>()) {
     Kokkos::View<int*, MemSpace> action("ondine::APR::action", n), kept_index("ondine::APR::kept_index", n),
         refine_index("ondine::APR::refine_index", n);
     // the mother flags before this pass (a deleted mother takes its daughters along)
@@ -161,6 +164,7 @@ class AdaptiveRefinement {
     deleted_ += comm.sum(static_cast<std::int64_t>(n - kept));
     refined_ += nfam;
     double dp[D + 1] = {};
+    long moved = 0;  // families moved off a wall
     if (kept != n || nref > 0) {
       Kokkos::View<double* [D + 1][D], Kokkos::LayoutRight, MemSpace> grad("ondine::APR::prolongation_gradient", nref);
       with_kernel<D>(kernel_, 1.0, [&](auto W1) {
@@ -176,11 +180,17 @@ class AdaptiveRefinement {
                                                 p.get(field::Position{}), p.get(field::Velocity{}), p.get(field::Density{}),
                                                 p.get(field::Mass{}), p.get(field::GlobalId{}), p.get(field::AprBirthLevel{}),
                                                 p.get(field::AprMother{}), p.get(field::AprParent{})});
+      if (walls.count > 0)
+        Kokkos::parallel_reduce("ondine::APR::daughter_wall_clearance", Kokkos::RangePolicy<ExecSpace>(0, nref),
+                                apr::DaughterWallClearance<D>{walls, box, zones_, refining, kept_index, kept,
+                                                              p.get(field::Position{}), p.get(field::AprBirthLevel{})},
+                                moved);
       Kokkos::parallel_reduce("ondine::APR::family_momentum", Kokkos::RangePolicy<ExecSpace>(0, nref),
                               apr::FamilyMomentum<D>{D + 1, refining, kept_index, kept, p.get(field::Velocity{}), p.get(field::Mass{})},
                               dp);
       n = kept + nd;
     }
+    families_moved_ += comm.sum(static_cast<std::int64_t>(moved));
     for (int a = 0; a < D; ++a) momentum_change_[a] += comm.sum(dp[a]);
     momentum_scale_ += comm.sum(dp[D]);
     next_id_ += nfam << D;
@@ -318,7 +328,7 @@ private:
   Kokkos::View<int*, MemSpace> wide_;  // per guard: fitted at R_m since the last list build (GuardWeights)
   Kokkos::View<int*, MemSpace> used_;  // per guard: its Lx entries within the interpolation radius (first in its row)
   bool weights_valid_ = false;
-  std::int64_t next_id_ = 0, refined_ = 0, deleted_ = 0;
+  std::int64_t next_id_ = 0, refined_ = 0, deleted_ = 0, families_moved_ = 0;
   double interp_seconds_ = 0;
   double momentum_change_[D] = {}, momentum_scale_ = 0;
 };

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -37,6 +38,7 @@ template <int D>
 RunReport run(const Scene& scene, const RunOptions& opt) {
   namespace fs = std::filesystem;
   const auto wall0 = Clock::now();
+  const std::clock_t cpu0 = std::clock();
   const Communicator comm;
   const bool root = comm.rank() == 0;
   CheckpointSlice restart;
@@ -255,6 +257,7 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
   report.steps = sim.steps() - (restarting ? restart.header.step : 0);
   report.simulated_time = sim.time();
   report.wall_seconds = std::chrono::duration<double>(Clock::now() - wall0).count();
+  report.cpu_seconds = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
   if (report.status != "diverged") report.errors = sim.errors();
   {
     // kinetic energy scale: 1/2 M u_ref^2 with u_ref the case's reference velocity
@@ -279,6 +282,7 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
   if (restarting) j["restarted_from"] = {{"file", opt.restart}, {"step", restart.header.step}, {"time", restart.header.time}};
   j["simulated_time"] = sim.time();
   j["wall_seconds"] = report.wall_seconds;
+  j["cpu_seconds"] = report.cpu_seconds;
   j["loop_seconds"] = loop_seconds;
   j["particle_steps_per_second"] = loop_seconds > 0 ? report.particles * static_cast<double>(report.steps) / loop_seconds : 0.0;
   j["mean_neighbours"] = pair_samples > 0 ? pair_sum / pair_samples / report.particles : 0.0;

@@ -24,6 +24,7 @@ struct RunReport {
   std::int64_t steps = 0;
   std::size_t particles = 0;
   double wall_seconds = 0, simulated_time = 0;
+  double cpu_seconds = 0;  // this process's CPU time (all its threads): what other load on the machine does not inflate
   std::map<std::string, double> errors;
 };
 

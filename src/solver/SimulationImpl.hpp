@@ -544,6 +544,9 @@ void Simulation<D>::evaluate() {
         pass.du = a.du;
         pass.drho = a.drho;
         pass.weights = laplacian_weights_;
+        pass.list = a.list;
+        pass.m = a.m;
+        pass.clearance = 0.5 * scene_.dx;
         pass.run(n);
       };
       if (morris_walls)
@@ -1096,6 +1099,8 @@ std::map<std::string, double> Simulation<D>::errors() const {
   }
   if (!walls_.empty()) {
     e["wall_leaks"] = static_cast<double>(wall_leaks());
+    e["wall_crossings"] = static_cast<double>(wall_leaks(0.0));  // on the solid side of a wall only
+    if (apr_on_) e["families_moved_off_walls"] = static_cast<double>(apr_.families_moved());
     e["wall_corrections"] = static_cast<double>(comm_.sum(wall_corrections_));
   }
   const Reference& ref = scene_.reference;

@@ -23,7 +23,7 @@ void Simulation<D>::refinement_bookkeeping() {
     exchange_.refresh(p_, comm_, field::AprBirthLevel{});
   }
   cells_.build(local_grid_, p_.get(field::Position{}), static_cast<int>(p_.size()));  // for the prolongation gradient
-  n_own_ = apr_.update(p_, cells_, box_, n_own_, comm_);
+  n_own_ = apr_.update(p_, cells_, box_, n_own_, comm_, walls_.segments());
   list_valid_ = false;
   rebuild_level_lists(true, true);
   apr_.interpolate(p_, box_, true, walls_.segments());  // passive guards: once per bookkeeping
@@ -241,17 +241,18 @@ void Simulation<D>::evaluate_levels() {
         Kokkos::parallel_for("ondine::NFM::WallFlux", Kokkos::RangePolicy<ExecSpace>(b, e),
                              WallFluxPass<D, decltype(W), true, true>{walls_.points(), wall_cells(l), W, Rl * Rl, a.body, scene_.nu, weos,
                                                                       0.05 * Rl, box_, a.P_min, a.x, a.u, a.rho, a.P, a.grad_rho,
-                                                                      p_.get(field::ShepardGamma{}), a.du, a.drho, laplacian_weights_});
+                                                                      p_.get(field::ShepardGamma{}), a.du, a.drho, laplacian_weights_, a.list, a.m,
+                                                                      0.5 * Rl / scene_.R_over_dx});
       else if (scene_.viscous_term != ViscousTerm::None)
         Kokkos::parallel_for("ondine::NFM::WallFlux", Kokkos::RangePolicy<ExecSpace>(b, e),
                              WallFluxPass<D, decltype(W), true, false>{walls_.points(), wall_cells(l), W, Rl * Rl, a.body, scene_.nu, weos,
                                                                        0.05 * Rl, box_, a.P_min, a.x, a.u, a.rho, a.P, a.grad_rho,
-                                                                       p_.get(field::ShepardGamma{}), a.du, a.drho, {}});
+                                                                       p_.get(field::ShepardGamma{}), a.du, a.drho, {}, a.list, a.m, 0.5 * Rl / scene_.R_over_dx});
       else
         Kokkos::parallel_for("ondine::NFM::WallFlux", Kokkos::RangePolicy<ExecSpace>(b, e),
                              WallFluxPass<D, decltype(W), false, false>{walls_.points(), wall_cells(l), W, Rl * Rl, a.body, scene_.nu, weos,
                                                                         0.05 * Rl, box_, a.P_min, a.x, a.u, a.rho, a.P, a.grad_rho,
-                                                                        p_.get(field::ShepardGamma{}), a.du, a.drho, {}});
+                                                                        p_.get(field::ShepardGamma{}), a.du, a.drho, {}, a.list, a.m, 0.5 * Rl / scene_.R_over_dx});
     });
   }
 }
