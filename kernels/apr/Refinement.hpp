@@ -290,6 +290,16 @@ struct Roles {
   }
 };
 
+// The sort key 3 r + role of a particle whose role is already known (a restart
+// from a checkpoint keeps the roles of the bookkeeping that saved them).
+template <int D>
+struct StoredKey {
+  field_view_t<field::AprBirthLevel, D> birth;
+  field_view_t<field::AprGuard, D> guard;
+  Kokkos::View<int*, MemSpace> key;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { key(i) = 3 * birth(i) + guard(i); }
+};
+
 // Stable counting sort by key, one key at a time (a handful of keys): the
 // particles with key `k` go to order[base + their rank], in index order.
 struct KeyScatter {
