@@ -41,4 +41,26 @@ struct StateHash {
   }
 };
 
+// The same over the APR fields of a run with refinement zones (docs/apr.md): each
+// particle's id, birth level, current level, role, mother flag and mother's id.
+template <int D>
+struct AprStateHash {
+  using value_type = unsigned long long;
+  field_view_t<field::GlobalId, D> id;
+  field_view_t<field::AprBirthLevel, D> birth;
+  field_view_t<field::AprLevel, D> level;
+  field_view_t<field::AprGuard, D> guard;
+  field_view_t<field::AprMother, D> mother;
+  field_view_t<field::AprParent, D> parent;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, value_type& h) const {
+    std::uint64_t a = mix64(static_cast<std::uint64_t>(id(i)) ^ 0x5bd1e9955bd1e995ULL);
+    a = mix64(a ^ static_cast<std::uint64_t>(birth(i)));
+    a = mix64(a ^ static_cast<std::uint64_t>(level(i)));
+    a = mix64(a ^ static_cast<std::uint64_t>(guard(i)));
+    a = mix64(a ^ static_cast<std::uint64_t>(mother(i)));
+    a = mix64(a ^ static_cast<std::uint64_t>(parent(i)));
+    h += a;
+  }
+};
+
 }  // namespace ondine

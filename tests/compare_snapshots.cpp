@@ -1,7 +1,9 @@
 // ondine_compare A.h5 B.h5 TOL [FIELD ...]: matches the particles of two snapshots
 // by global id and prints, per field, the largest difference relative to the
 // field's largest magnitude in A; exits 1 if any exceeds TOL (0: bitwise), or if
-// the particle sets differ. Default fields: position, velocity, density, pressure.
+// the particle sets differ. Default fields: position, velocity, density, pressure;
+// `all`: every dataset of A but the id (and B must have the same datasets).
+// Checkpoints (OUT/checkpoint.h5) are read as well.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -50,6 +52,13 @@ int main(int argc, char** argv) {
   std::vector<std::string> names;
   for (int k = 4; k < argc; ++k) names.emplace_back(argv[k]);
   if (names.empty()) names = {"position", "velocity", "density", "pressure"};
+  if (names.size() == 1 && names[0] == "all") {
+    names.clear();
+    for (const std::string& n : a.names)
+      if (n != "id") names.push_back(n);
+    for (const std::string& n : b.names)
+      if (n != "id" && std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);  // reported missing in A
+  }
   if (a.particles != b.particles) {
     std::printf("particle counts differ: %zu and %zu\n", a.particles, b.particles);
     return 1;

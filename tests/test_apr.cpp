@@ -471,3 +471,42 @@ TEST_CASE("APR: a zone following the speed is re-centred on the fastest SPH part
   CHECK(std::abs(yc - 0.1) <= 0.011);  // the particle nearest the peak line (dx / 2)
   CHECK(z.hi[0][0] - z.lo[0][0] == Approx(0.1));
 }
+
+TEST_CASE("APR: an output (prepare_output, then finish_output) does not change the run", "[apr]") {
+  // a Taylor-Green field (the guards' interpolated values differ from the ones they carry)
+  // and a zone moving through it (refinement and derefinement at the bookkeepings)
+  const std::string y =
+      "dimension: 2\n"
+      "domain: {min: [0, 0], max: [0.4, 0.4], periodic: [true, true]}\n"
+      "fluid: {rho0: 1000, sound_speed: 10}\n"
+      "discretisation: {dx: 0.02, R_over_dx: 3}\n"
+      "fluid_blocks: [{min: [0, 0], max: [0.4, 0.4], velocity: {taylor_green: {amplitude: 1.0, wavelength: 0.4}}}]\n"
+      "scheme: {time_integrator: rk4, delta_sph: 0.1}\n"
+      "time: {duration: 1, output_interval: 1}\n"
+      "refinement: {zones: [{name: box, min: [0.1, 0.12], max: [0.2, 0.28], velocity: [1.0, 0]}]}\n";
+  Simulation<2> quiet(parse_case(y, "no_output.yaml")), watched(parse_case(y, "outputs.yaml"));
+  for (int s = 0; s < 60; ++s) {
+    quiet.step(1.0);
+    watched.step(1.0);
+    if (s % 4 == 1) {
+      watched.prepare_output();
+      watched.finish_output();
+    }
+  }
+  REQUIRE(quiet.particles().size() == watched.particles().size());
+  const HostState a = host_state(quiet), b = host_state(watched);
+  const auto ida = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), quiet.particles().get(field::GlobalId{}));
+  const auto idb = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), watched.particles().get(field::GlobalId{}));
+  int differ = 0;
+  for (std::size_t i = 0; i < quiet.particles().size(); ++i)
+    if (ida(i) != idb(i) || a.x(i, 0) != b.x(i, 0) || a.x(i, 1) != b.x(i, 1) || a.u(i, 0) != b.u(i, 0) || a.u(i, 1) != b.u(i, 1) ||
+        a.rho(i) != b.rho(i) || a.guard(i) != b.guard(i) || a.mother(i) != b.mother(i))
+      ++differ;
+  std::printf("APR outputs: %lld refinements, %lld daughters deleted in %lld steps; %d of %zu particles differ from the run "
+              "without outputs\n",
+              static_cast<long long>(watched.refinement().refined()), static_cast<long long>(watched.refinement().deleted()),
+              static_cast<long long>(watched.steps()), differ, watched.particles().size());
+  CHECK(watched.refinement().deleted() > 0);
+  CHECK(quiet.refinement().refined() == watched.refinement().refined());
+  CHECK(differ == 0);
+}

@@ -20,7 +20,21 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, std::i
   f.attribute("initial_momentum_y", h.initial_momentum[1]);
   f.attribute("initial_momentum_z", h.initial_momentum[2]);
   f.attribute("checksum", h.checksum);
-  for (const std::string& name : checkpoint_fields()) {
+  std::vector<std::string> names = checkpoint_fields();
+  if (h.refinement.present) {
+    const CheckpointRefinement& a = h.refinement;
+    f.attribute("refinement_zones", a.zones);
+    f.attribute("refinement_next_id", a.next_id);
+    f.attribute("refinement_refined", a.refined);
+    f.attribute("refinement_deleted", a.deleted);
+    f.attribute("refinement_momentum_change", std::vector<double>(a.momentum_change, a.momentum_change + 3));
+    f.attribute("refinement_momentum_scale", a.momentum_scale);
+    f.attribute("refinement_zone_offset", a.offset);
+    f.attribute("refinement_zone_lo_at_update", a.lo_at_update);
+    f.attribute("refinement_checksum", a.checksum);
+    for (const std::string& name : checkpoint_refinement_fields()) names.push_back(name);
+  }
+  for (const std::string& name : names) {
     const auto it = fields.find(name);
     if (it == fields.end()) throw std::logic_error("write_checkpoint: field " + name + " not given");
     f.dataset(name, it->second.first, it->second.second);
@@ -49,9 +63,34 @@ CheckpointSlice read_checkpoint(const std::string& path, const Communicator& com
     h.initial_momentum[1] = r.attribute_double("initial_momentum_y");
     h.initial_momentum[2] = r.attribute_double("initial_momentum_z");
     h.checksum = r.attribute_u64("checksum");
+    std::vector<std::string> names = checkpoint_fields();
+    if (r.has("refinement_zones")) {
+      // written by a run with refinement zones: its APR state and fields (all of them)
+      CheckpointRefinement& a = h.refinement;
+      a.present = true;
+      a.zones = r.attribute_string("refinement_zones");
+      a.next_id = r.attribute_int("refinement_next_id");
+      a.refined = r.attribute_int("refinement_refined");
+      a.deleted = r.attribute_int("refinement_deleted");
+      const std::vector<double> dp = r.attribute_doubles("refinement_momentum_change");
+      if (dp.size() != 3) throw CheckpointError(path + ": attribute 'refinement_momentum_change' does not have 3 values");
+      for (int k = 0; k < 3; ++k) a.momentum_change[k] = dp[k];
+      a.momentum_scale = r.attribute_double("refinement_momentum_scale");
+      a.offset = r.attribute_doubles("refinement_zone_offset");
+      a.lo_at_update = r.attribute_doubles("refinement_zone_lo_at_update");
+      if (a.offset.size() % 3 != 0 || a.lo_at_update.size() != a.offset.size())
+        throw CheckpointError(path + ": attributes 'refinement_zone_offset' and 'refinement_zone_lo_at_update' do not hold 3 values per zone");
+      a.checksum = r.attribute_u64("refinement_checksum");
+      for (const std::string& name : checkpoint_refinement_fields()) {
+        if (!r.has(name.c_str()))
+          throw CheckpointError(path + ": dataset '" + name + "' is missing (the checkpoint of a run with refinement zones holds "
+                                "birth_level, level, guard, mother and parent_id)");
+        names.push_back(name);
+      }
+    }
     const std::int64_t first = h.particles * comm.rank() / comm.size();
     s.rows = h.particles * (comm.rank() + 1) / comm.size() - first;
-    for (const std::string& name : checkpoint_fields()) {
+    for (const std::string& name : names) {
       std::int64_t rows = 0;
       int comps = 0;
       r.shape(name, rows, comps);

@@ -6,6 +6,9 @@
 // of the state. Written under a temporary name and renamed, so that the file
 // under its name is always complete; read back on any number of ranks, each
 // reading an equal share before the particles migrate to their owners.
+// A run with refinement zones (docs/apr.md) also saves its APR fields and the
+// state of its zones and bookkeeping (CheckpointRefinement); a uniform run's
+// checkpoint has none of it.
 #include <cstdint>
 #include <map>
 #include <stdexcept>
@@ -20,6 +23,21 @@ struct CheckpointError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The APR state of a run with refinement zones (src/solver/AdaptiveRefinement.hpp):
+// present only in a checkpoint of such a run.
+struct CheckpointRefinement {
+  bool present = false;
+  std::string zones;                  // the zone definitions, one line per zone (compared with the case's at a restart)
+  std::int64_t next_id = 0;           // global id of the next daughter
+  std::int64_t refined = 0;           // mothers refined since t = 0
+  std::int64_t deleted = 0;           // daughters deleted since t = 0
+  double momentum_change[3] = {0, 0, 0};  // sum over refinements of sum_f m_f u_f - m_m u_m
+  double momentum_scale = 0;              // sum over refinements of m_m |u_m|
+  std::vector<double> offset;        // zones x 3: displacement of each zone from its case-file box (m)
+  std::vector<double> lo_at_update;  // zones x 3: each zone's lower corner at the last bookkeeping (m)
+  std::uint64_t checksum = 0;        // of the APR fields with the ids (kernels/StateHash.hpp)
+};
+
 struct CheckpointHeader {
   std::string case_name;
   int dimension = 0;
@@ -31,11 +49,19 @@ struct CheckpointHeader {
   double initial_mass = 0;
   double initial_momentum[3] = {0, 0, 0};
   std::uint64_t checksum = 0;  // of the state fields (kernels/StateHash.hpp)
+  CheckpointRefinement refinement;
 };
 
 // The state fields, in this order, with their components (D for vectors).
 inline const std::vector<std::string>& checkpoint_fields() {
   static const std::vector<std::string> f = {"position", "velocity", "density", "mass", "id"};
+  return f;
+}
+
+// The APR fields (field labels of kernels/Fields.hpp), one value per particle,
+// written and read only with refinement zones.
+inline const std::vector<std::string>& checkpoint_refinement_fields() {
+  static const std::vector<std::string> f = {"birth_level", "level", "guard", "mother", "parent_id"};
   return f;
 }
 
@@ -45,12 +71,14 @@ struct CheckpointSlice {
   std::map<std::string, std::vector<double>> fields;  // name -> rows x components, row-major
 };
 
-// `fields`: this rank's rows of each state field (name -> rows, components).
+// `fields`: this rank's rows of each state field (name -> rows, components), and
+// of the APR fields when header.refinement.present.
 void write_checkpoint(const std::string& path, const CheckpointHeader& header, std::int64_t local_rows,
                       const std::map<std::string, std::pair<std::vector<double>, int>>& fields, const Communicator& comm);
 
 // This rank's share of a checkpoint; throws CheckpointError naming the file and
 // what is wrong (unreadable, truncated, a missing field, a count that does not add up).
+// The APR fields and state are read when the file has them (header.refinement.present).
 CheckpointSlice read_checkpoint(const std::string& path, const Communicator& comm);
 
 }  // namespace ondine

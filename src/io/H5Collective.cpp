@@ -90,6 +90,16 @@ void H5CollectiveFile::attribute(const char* name, const std::string& v) {
   H5Tclose(type);
 }
 
+void H5CollectiveFile::attribute(const char* name, const std::vector<double>& v) {
+  const hsize_t dims[1] = {static_cast<hsize_t>(v.size())};
+  const hid_t space = v.empty() ? H5Screate(H5S_NULL) : H5Screate_simple(1, dims, nullptr);
+  const hid_t attr = H5Acreate2(file_, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
+  if (attr < 0) throw std::runtime_error(std::string("HDF5: cannot create attribute ") + name);
+  if (!v.empty()) check(H5Awrite(attr, H5T_NATIVE_DOUBLE, v.data()), std::string("writing attribute ") + name);
+  H5Aclose(attr);
+  H5Sclose(space);
+}
+
 void H5CollectiveFile::dataset(const std::string& name, const std::vector<double>& rows, int components) {
   const hsize_t dims[2] = {static_cast<hsize_t>(global_), static_cast<hsize_t>(components)};
   const int rank = components == 1 ? 1 : 2;
@@ -163,6 +173,19 @@ std::string H5CollectiveReader::attribute_string(const char* name) const {
   H5Aclose(a);
   if (st < 0) throw std::runtime_error(path_ + ": attribute '" + name + "' cannot be read");
   return v.substr(0, v.find('\0'));
+}
+
+std::vector<double> H5CollectiveReader::attribute_doubles(const char* name) const {
+  const hid_t a = H5Aopen(file_, name, H5P_DEFAULT);
+  if (a < 0) throw std::runtime_error(path_ + ": attribute '" + name + "' is missing");
+  const hid_t space = H5Aget_space(a);
+  const hssize_t n = H5Sget_simple_extent_npoints(space);
+  H5Sclose(space);
+  std::vector<double> v(n > 0 ? static_cast<std::size_t>(n) : 0);
+  const herr_t st = v.empty() ? 0 : H5Aread(a, H5T_NATIVE_DOUBLE, v.data());
+  H5Aclose(a);
+  if (n < 0 || st < 0) throw std::runtime_error(path_ + ": attribute '" + name + "' cannot be read");
+  return v;
 }
 
 void H5CollectiveReader::shape(const std::string& name, std::int64_t& rows, int& components) const {

@@ -28,6 +28,7 @@ class H5CollectiveFile {
   void attribute(const char* name, int v);
   void attribute(const char* name, std::uint64_t v);
   void attribute(const char* name, const std::string& v);
+  void attribute(const char* name, const std::vector<double>& v);  // a 1-D array attribute
   // this rank's rows, row-major local_rows x components (components 1: a 1-D dataset)
   void dataset(const std::string& name, const std::vector<double>& rows, int components);
   void commit();
@@ -54,6 +55,7 @@ class H5CollectiveReader {
   std::int64_t attribute_int(const char* name) const;
   std::uint64_t attribute_u64(const char* name) const;
   std::string attribute_string(const char* name) const;
+  std::vector<double> attribute_doubles(const char* name) const;  // a 1-D array attribute (a scalar: one value)
   // rows of a dataset: total count and component count
   void shape(const std::string& name, std::int64_t& rows, int& components) const;
   // rows [first, first + count) of a dataset, row-major

@@ -6,6 +6,7 @@
 // Exists only in a Simulation whose scene has refinement zones.
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "kernels/apr/InteractionLists.hpp"
 #include "kernels/apr/Refinement.hpp"
 #include "parallel/Communicator.hpp"
+#include "io/Checkpoint.hpp"
 #include "particles/ParticleSet.hpp"
 #include "scene/Scene.hpp"
 #include "solver/KernelDispatch.hpp"
@@ -86,6 +88,59 @@ class AdaptiveRefinement {
     p.allocate(field::AprMother{});
     Kokkos::deep_copy(p.allocate(field::AprParent{}), std::int64_t(-1));
     next_id_ = global_count;
+  }
+
+  // The per-run state a checkpoint carries (io/Checkpoint.hpp): the next daughter id,
+  // the counters, and where each zone is (its offset from the case-file box, and
+  // its lower corner at the last bookkeeping).
+  void save_state(CheckpointRefinement& c) const {
+    c.present = true;
+    c.next_id = next_id_;
+    c.refined = refined_;
+    c.deleted = deleted_;
+    for (int a = 0; a < 3; ++a) c.momentum_change[a] = a < D ? momentum_change_[a] : 0.0;
+    c.momentum_scale = momentum_scale_;
+    c.offset.assign(3 * scene_zones_.size(), 0.0);
+    c.lo_at_update.assign(3 * scene_zones_.size(), 0.0);
+    for (std::size_t z = 0; z < scene_zones_.size(); ++z)
+      for (int k = 0; k < D; ++k) {
+        c.offset[3 * z + k] = offset_[z][k];
+        c.lo_at_update[3 * z + k] = lo_at_update_[z][k];
+      }
+  }
+
+  // A restart: the state of save_state() back, and the level ranges from the APR
+  // fields read from the checkpoint (birth level and role of each particle, as the
+  // last bookkeeping set them; the particles are in the order they were saved in,
+  // already sorted by (level, role) on one rank: the stable sort keeps that order).
+  void restore(ParticleSet<D>& p, int n, const CheckpointRefinement& c) {
+    if (c.offset.size() != 3 * scene_zones_.size() || c.lo_at_update.size() != c.offset.size())
+      throw std::logic_error("AdaptiveRefinement::restore: the checkpoint's zone count differs from the scene's");
+    next_id_ = c.next_id;
+    refined_ = c.refined;
+    deleted_ = c.deleted;
+    for (int a = 0; a < D; ++a) momentum_change_[a] = c.momentum_change[a];
+    momentum_scale_ = c.momentum_scale;
+    for (std::size_t z = 0; z < scene_zones_.size(); ++z)
+      for (int k = 0; k < D; ++k) {
+        offset_[z][k] = c.offset[3 * z + k];
+        lo_at_update_[z][k] = c.lo_at_update[3 * z + k];
+      }
+    place_zones();
+    sort(p, n, false);  // each particle keeps the role stored with it
+    weights_valid_ = false;
+  }
+
+  // An output interpolates every guard (and may fit some at R_m): the guards' fields
+  // and flags are saved before and put back after it, so that an output (and so a
+  // checkpoint or a restart) does not change the run.
+  void save_wide_flags() {
+    if (wide_saved_.extent(0) != wide_.extent(0)) wide_saved_ = Kokkos::View<int*, MemSpace>("ondine::APR::guard_wide_saved", wide_.extent(0));
+    Kokkos::deep_copy(wide_saved_, wide_);
+  }
+  void restore_wide_flags() {
+    if (wide_saved_.extent(0) == wide_.extent(0)) Kokkos::deep_copy(wide_, wide_saved_);
+    weights_valid_ = false;
   }
 
   // Moves the zones to time t (translation) and, every `every` steps, re-centres a
@@ -281,6 +336,9 @@ class AdaptiveRefinement {
         base += count;
         (g == 0 ? active_end_[l] : g == 1 ? guard_end_[l] : end_[l]) = base;
       }
+    if (base != n)  // only a restart can bring them: a checkpoint of other zones, or a corrupted one
+      throw std::runtime_error(std::to_string(n - base) + " particles have a birth level or a role (guard) outside 0.." +
+                               std::to_string(levels_ - 1) + " and 0..2");
     p.permute([&order](const auto& v) { return permuted(v, order); }, static_cast<std::size_t>(n));
     // guards are never integrated: their rates stay zero (the flux passes cover SPH particles only)
     for (int l = 0; l < levels_; ++l)
@@ -326,6 +384,7 @@ private:
   NeighbourList<D> l_dot_, l_cross_;
   Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> psi_;  // guard shape functions (Lx entry, value + gradient)
   Kokkos::View<int*, MemSpace> wide_;  // per guard: fitted at R_m since the last list build (GuardWeights)
+  Kokkos::View<int*, MemSpace> wide_saved_;  // wide_ before an output (save_wide_flags)
   Kokkos::View<int*, MemSpace> used_;  // per guard: its Lx entries within the interpolation radius (first in its row)
   bool weights_valid_ = false;
   std::int64_t next_id_ = 0, refined_ = 0, deleted_ = 0, families_moved_ = 0;

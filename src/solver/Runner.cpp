@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -34,6 +35,85 @@ std::string fmt_seconds(double s) {
   return o.str();
 }
 
+// The refinement zones of a case as a checkpoint records them (attribute
+// `refinement_zones`): the transition width, then one line per zone, each number with
+// the fewest significant digits that read back as the same double. A restart requires
+// the case's to be the same text.
+std::string shortest(double v) {
+  char buf[40];
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    if (std::strtod(buf, nullptr) == v) break;
+  }
+  return buf;
+}
+
+std::string refinement_zone_text(const Scene& s) {
+  std::ostringstream o;
+  auto vec = [&](const Vec3& v) {
+    o << "[";
+    for (int k = 0; k < s.dimension; ++k) o << (k ? ", " : "") << shortest(v[k]);
+    o << "]";
+  };
+  o << "transition " << shortest(s.refinement_transition) << "\n";
+  for (const RefinementZone& z : s.refinement_zones) {
+    o << "zone " << z.name << ": level " << z.level << ", in "
+      << (z.parent >= 0 ? s.refinement_zones[static_cast<std::size_t>(z.parent)].name : std::string("-")) << ", min ";
+    vec(z.box.min);
+    o << ", max ";
+    vec(z.box.max);
+    if (z.motion == ZoneMotion::Translation) {
+      o << ", velocity ";
+      vec(z.velocity);
+    } else if (z.motion == ZoneMotion::Criterion) {
+      o << ", follow " << (z.criterion == ZoneCriterion::Pressure ? "pressure" : "speed") << " every " << z.every << " in ";
+      vec(z.search.min);
+      o << " .. ";
+      vec(z.search.max);
+    } else {
+      o << ", static";
+    }
+    o << "\n";
+  }
+  return o.str();
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+// A checkpoint's APR state against the case: both or neither have refinement zones,
+// and the same ones. Throws CheckpointError naming the file and the difference.
+void check_refinement_restart(const Scene& scene, const CheckpointHeader& h, const std::string& path) {
+  const CheckpointRefinement& a = h.refinement;
+  const bool zones = !scene.refinement_zones.empty();
+  if (zones && !a.present)
+    throw CheckpointError(path + ": it has no refinement state (no attribute 'refinement_zones', no datasets birth_level, level, "
+                          "guard, mother, parent_id): it was written by a run without refinement zones, and the case " +
+                          scene.source_file + " has " + std::to_string(scene.refinement_zones.size()) +
+                          (scene.refinement_zones.size() == 1 ? " zone" : " zones") + " (key 'refinement'); restart it with the case that wrote it, or start this case anew");
+  if (!zones && a.present)
+    throw CheckpointError(path + ": it was written by a run with refinement zones (it holds their APR fields and state), and the case " +
+                          scene.source_file + " has none (no key 'refinement'); restart it with the case that wrote it");
+  if (!zones) return;
+  const std::string mine = refinement_zone_text(scene);
+  if (mine == a.zones) return;
+  const auto saved = lines_of(a.zones), ours = lines_of(mine);
+  std::string what;
+  for (std::size_t k = 0; k < std::max(saved.size(), ours.size()) && what.empty(); ++k) {
+    if (k >= saved.size()) what = "the case has '" + ours[k] + "', the checkpoint no such zone";
+    else if (k >= ours.size()) what = "the checkpoint has '" + saved[k] + "', the case no such zone";
+    else if (saved[k] != ours[k]) what = "the checkpoint has '" + saved[k] + "', the case has '" + ours[k] + "'";
+  }
+  auto zones_count = [](std::size_t lines) { return std::to_string(lines - 1) + (lines == 2 ? " zone" : " zones"); };
+  throw CheckpointError(path + ": it was written with other refinement zones than those of the case " + scene.source_file +
+                        " (key 'refinement'): " + what + " (" + zones_count(saved.size()) + " in the checkpoint, " +
+                        zones_count(ours.size()) + " in the case); a run with zones restarts with the zones it was written with");
+}
+
 template <int D>
 RunReport run(const Scene& scene, const RunOptions& opt) {
   namespace fs = std::filesystem;
@@ -49,10 +129,24 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
     if (h.dimension != D || std::abs(h.dx - scene.dx) > 1e-12 * scene.dx)
       throw CheckpointError(opt.restart + ": written by a " + std::to_string(h.dimension) + "D run with dx = " + std::to_string(h.dx) +
                             " m; the case has dimension " + std::to_string(D) + " and dx = " + std::to_string(scene.dx) + " m");
+    check_refinement_restart(scene, h, opt.restart);
   }
-  Simulation<D> sim(scene, restarting ? &restart : nullptr);
+  auto make_simulation = [&]() {
+    if (!restarting) return Simulation<D>(scene, nullptr);
+    try {
+      return Simulation<D>(scene, &restart);
+    } catch (const CheckpointError&) {
+      throw;
+    } catch (const std::runtime_error& e) {  // the state read does not make a run (e.g. APR roles outside the zone table)
+      throw CheckpointError(opt.restart + ": " + e.what());
+    }
+  };
+  Simulation<D> sim = make_simulation();
   if (restarting && sim.state_checksum() != restart.header.checksum)
     throw CheckpointError(opt.restart + ": the particle state does not match the checksum stored with it: the file is corrupted");
+  if (restarting && sim.refinement_on() && sim.refinement_checksum() != restart.header.refinement.checksum)
+    throw CheckpointError(opt.restart + ": the APR fields (birth_level, level, guard, mother, parent_id) do not match the checksum "
+                          "stored with them (refinement_checksum): the file is corrupted");
   if (root) fs::create_directories(opt.out_dir);
   comm.barrier();
   SnapshotWriter snapshots(opt.out_dir, scene.name, comm);
@@ -154,6 +248,7 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
     }
     diag_csv.flush();
     diverged = !d.finite;
+    sim.finish_output();  // the run goes on from its own state (APR: the guards as they were)
     // stability figures over the whole run (validation.md): density range, kinetic energy, escapes
     max_rho_dev = std::max({max_rho_dev, std::abs(d.rho_max / scene.rho0 - 1), std::abs(d.rho_min / scene.rho0 - 1)});
     max_ke = std::max(max_ke, d.kinetic_energy);
@@ -178,6 +273,10 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
     h.initial_mass = d0.mass;
     for (int k = 0; k < 3; ++k) h.initial_momentum[k] = d0.momentum[k];
     h.checksum = sim.state_checksum();
+    if (sim.refinement_on()) {
+      h.refinement = sim.refinement_state();
+      h.refinement.zones = refinement_zone_text(scene);
+    }
     write_checkpoint(checkpoint_path, h, static_cast<std::int64_t>(sim.size()), sim.state_rows(), comm);
     sim.invalidate_neighbours();  // a restart from this file takes the same path from here
     last_checkpoint = Clock::now();
@@ -296,6 +395,16 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
                    {"exchange_seconds_max", comm.max(sim.exchange_seconds())},
                    {"exchange_share_of_loop", loop_seconds > 0 ? comm.max(sim.exchange_seconds()) / loop_seconds : 0.0}};
   j["checkpoints"] = {{"count", checkpoints}, {"seconds", checkpoint_seconds}, {"file", checkpoint_path}};
+  if (sim.refinement_on()) {
+    const AdaptiveRefinement<D>& apr = sim.refinement();
+    j["refinement"] = {{"levels", apr.levels()},
+                       {"particles", sim.global_size()},
+                       {"sph_particles", sim.sph_particles()},
+                       {"guards", apr.guards()},
+                       {"passive_guards", apr.passive()},
+                       {"refined", apr.refined()},
+                       {"deleted", apr.deleted()}};
+  }
   j["kokkos_version"] = kokkos_version();
   j["ondine_version"] = ondine_version();
   j["scheme"] = {{"kernel", to_string(scene.kernel)},

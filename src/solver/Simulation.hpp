@@ -89,11 +89,20 @@ class Simulation {
   const Decomposition& decomposition() const { return decomposition_; }
   // the neighbour list is rebuilt at the next evaluation (a checkpoint does it, so
   // that a restarted run takes the same path)
-  void invalidate_neighbours() { list_valid_ = false; }
-  // owned rows of the state fields (io/Checkpoint.hpp) on the host: name -> (rows, components)
+  // (with refinement zones: the next step starts with a bookkeeping, as a restart's does)
+  void invalidate_neighbours() {
+    list_valid_ = false;
+    bookkeeping_due_ = true;
+  }
+  // owned rows of the state fields (io/Checkpoint.hpp) on the host: name -> (rows, components);
+  // with refinement zones, of the APR fields too (checkpoint_refinement_fields())
   std::map<std::string, std::pair<std::vector<double>, int>> state_rows() const;
   // order-independent checksum of the state fields (position, velocity, density, mass, id), all ranks
   std::uint64_t state_checksum() const;
+  // with refinement zones: the APR state a checkpoint carries (all but the zone text), with
+  // the checksum of the APR fields (kernels/StateHash.hpp)
+  CheckpointRefinement refinement_state() const;
+  std::uint64_t refinement_checksum() const;
   std::int64_t pair_count() const;            // pairs within R (both ways) at the last list build
   std::int64_t neighbour_builds() const { return builds_; }
   // lattice quadrature factor of the Morris Laplacian (kernels/MorrisLatticeFactor.hpp); 1 without it
@@ -118,8 +127,13 @@ class Simulation {
   std::int64_t wall_leaks(double clearance = -1) const;
   // free-surface flag (4.86-4.87) into field::FreeSurface, at output times
   void update_free_surface();
-  // before a snapshot: pressure from the EOS, Shepard factor and walls at time t, free surface
+  // before a snapshot: pressure from the EOS, Shepard factor and walls at time t, free surface;
+  // with refinement zones, every guard interpolated from the stored state (5.24)
   void prepare_output();
+  // after the output: puts back what prepare_output changed that the next step reads (the
+  // guards' velocity, density and density gradient with refinement zones), so that an
+  // output, a checkpoint or a restart does not change the run; nothing without zones
+  void finish_output();
   // x of the leading edge of the fluid (max x + dx/2), for the dam-break front
   double front_position() const;
 
@@ -191,6 +205,14 @@ class Simulation {
   std::int64_t steps_ = 0, builds_ = 0;
   std::int64_t wall_corrections_ = 0;  // this rank's impermeability corrections (kernels/WallImpermeability.hpp)
   bool list_valid_ = false;
+  // APR: the next step start runs the bookkeeping even if the lists are valid (after a
+  // checkpoint, a restart, or a list rebuild at an output)
+  bool bookkeeping_due_ = false;
+  // APR: the guards' fields before prepare_output's interpolation (finish_output puts them back)
+  bool output_saved_ = false;
+  field_view_t<field::Velocity, D> saved_u_;
+  field_view_t<field::Density, D> saved_rho_;
+  field_view_t<field::DensityGradient, D> saved_grad_rho_;
   Diagnostics initial_;
   AdaptiveRefinement<D> apr_;
   bool apr_on_ = false;

@@ -53,9 +53,8 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
   skin_len_ = scene.neighbour_skin * (apr_on_ ? dx_finest : scene.dx);
   cutoff_ = R_ + skin_len_;
   if (apr_on_) {
-    if (restart)
-      throw std::invalid_argument(scene.source_file + ": key 'refinement': a run with refinement zones cannot restart from "
-                                  "a checkpoint yet (the APR fields are not checkpointed)");
+    if (restart && !restart->header.refinement.present)
+      throw std::logic_error("Simulation<D>: a checkpoint without the APR state for a scene with refinement zones");
     if (scene_.wall_quadrature_spacing == 0) scene_.wall_quadrature_spacing = dx_finest / 4;
   }
   for (int k = 0; k < D; ++k) {
@@ -128,7 +127,16 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
     decompose(false);
     n_own_ = exchange_.migrate(p_, n_own_, orb_, box_, comm_);
   }
-  if (apr_on_) {
+  if (apr_on_ && restart) {
+    // the APR fields came with the checkpoint (load_checkpoint); the zones, counters and
+    // level ranges as saved (on several ranks after the first migration: each rank sorts
+    // the particles it owns by their stored level and role). The first step starts with
+    // the bookkeeping that the saved run would have done after writing the checkpoint.
+    apr_ = AdaptiveRefinement<D>(scene_, box_, skin_len_);
+    apr_.restore(p_, n_own_, restart->header.refinement);
+    list_valid_ = false;
+    bookkeeping_due_ = true;
+  } else if (apr_on_) {
     // every particle starts as a coarse SPH particle; one bookkeeping pass per
     // level creates the daughters of each nested level in turn (on several ranks,
     // after the first decomposition: each rank refines the particles it owns)
@@ -260,13 +268,21 @@ void Simulation<D>::load_checkpoint(const CheckpointSlice& c) {
     Kokkos::deep_copy(dev, Kokkos::View<const double**, Kokkos::LayoutRight, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(
                                rows.data(), c.rows, w));
     Kokkos::parallel_for("ondine::Restart::unpack", Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(c.rows)),
-                         exchange::UnpackRows<V>{p_.get(tag), dev, 0, 0});
+                         exchange::UnpackRows<V>{p_.allocate(tag), dev, 0, 0});
   };
   put(field::Position{});
   put(field::Velocity{});
   put(field::Density{});
   put(field::Mass{});
   put(field::GlobalId{});
+  if (apr_on_) {
+    // level, role, mother flag and mother's id of each particle, as the run saved them
+    put(field::AprBirthLevel{});
+    put(field::AprLevel{});
+    put(field::AprGuard{});
+    put(field::AprMother{});
+    put(field::AprParent{});
+  }
 }
 
 template <int D>
@@ -289,7 +305,34 @@ std::map<std::string, std::pair<std::vector<double>, int>> Simulation<D>::state_
   take(field::Density{});
   take(field::Mass{});
   take(field::GlobalId{});
+  if (apr_on_) {
+    take(field::AprBirthLevel{});
+    take(field::AprLevel{});
+    take(field::AprGuard{});
+    take(field::AprMother{});
+    take(field::AprParent{});
+  }
   return out;
+}
+
+template <int D>
+CheckpointRefinement Simulation<D>::refinement_state() const {
+  CheckpointRefinement c;
+  if (!apr_on_) return c;
+  apr_.save_state(c);
+  c.checksum = refinement_checksum();
+  return c;
+}
+
+template <int D>
+std::uint64_t Simulation<D>::refinement_checksum() const {
+  if (!apr_on_) return 0;
+  unsigned long long h = 0;
+  Kokkos::parallel_reduce("ondine::AprStateHash", Kokkos::RangePolicy<ExecSpace>(0, n_own_),
+                          AprStateHash<D>{p_.get(field::GlobalId{}), p_.get(field::AprBirthLevel{}), p_.get(field::AprLevel{}),
+                                          p_.get(field::AprGuard{}), p_.get(field::AprMother{}), p_.get(field::AprParent{})},
+                          h);
+  return comm_.sum_u64(static_cast<std::uint64_t>(h));
 }
 
 template <int D>
@@ -655,6 +698,7 @@ void Simulation<D>::allocate_stage_storage() {
 
 template <int D>
 double Simulation<D>::step(double t_stop) {
+  output_saved_ = false;  // finish_output() after a step has nothing to put back
   if (scene_.reorder_interval > 0 && steps_ % scene_.reorder_interval == 0) reorder_by_cell();
   if (apr_on_) refinement_step_start();
   allocate_stage_storage();
@@ -990,7 +1034,20 @@ void Simulation<D>::prepare_output() {
   // the stored state's own pressure and Shepard factor (the flux passes left last-stage values)
   refresh_halos();
   if (apr_on_) {
+    // a list rebuild here would have been the next step start's, with its bookkeeping: it still is
+    const std::int64_t builds = builds_;
     ensure_neighbours();
+    if (builds_ != builds) bookkeeping_due_ = true;
+    // the guards' fields as the run has them, put back by finish_output()
+    auto keep = [](auto& saved, const auto& v) {
+      if (saved.extent(0) != v.extent(0)) saved = std::decay_t<decltype(saved)>("ondine::APR::saved_for_output", v.extent(0));
+      Kokkos::deep_copy(saved, v);
+    };
+    keep(saved_u_, p_.get(field::Velocity{}));
+    keep(saved_rho_, p_.get(field::Density{}));
+    if (p_.has(field::DensityGradient{})) keep(saved_grad_rho_, p_.get(field::DensityGradient{}));
+    apr_.save_wide_flags();
+    output_saved_ = true;
     apr_.interpolate(p_, box_, true, walls_.segments());  // the guards of the stored state (5.24)
     refresh_guard_halos();
   }
@@ -1000,6 +1057,16 @@ void Simulation<D>::prepare_output() {
   });
   if (!walls_.empty()) update_walls(t_);
   update_free_surface();
+}
+
+template <int D>
+void Simulation<D>::finish_output() {
+  if (!apr_on_ || !output_saved_) return;
+  Kokkos::deep_copy(p_.get(field::Velocity{}), saved_u_);
+  Kokkos::deep_copy(p_.get(field::Density{}), saved_rho_);
+  if (p_.has(field::DensityGradient{})) Kokkos::deep_copy(p_.get(field::DensityGradient{}), saved_grad_rho_);
+  apr_.restore_wide_flags();
+  output_saved_ = false;
 }
 
 template <int D>

@@ -25,6 +25,7 @@ void Simulation<D>::refinement_bookkeeping() {
   cells_.build(local_grid_, p_.get(field::Position{}), static_cast<int>(p_.size()));  // for the prolongation gradient
   n_own_ = apr_.update(p_, cells_, box_, n_own_, comm_, walls_.segments());
   list_valid_ = false;
+  bookkeeping_due_ = false;
   rebuild_level_lists(true, true);
   apr_.interpolate(p_, box_, true, walls_.segments());  // passive guards: once per bookkeeping
   refresh_guard_halos();
@@ -131,7 +132,8 @@ void Simulation<D>::refresh_guard_halos() {
 
 // At the start of a step: the zones at time t (moving, or re-centred on their
 // criterion), then the bookkeeping whenever the lists have to be rebuilt anyway
-// (Verlet criterion, a reordering, or zones moved by more than half the skin).
+// (Verlet criterion, a reordering, zones moved by more than half the skin, or
+// bookkeeping_due_: after a checkpoint, at a restart, after a list rebuild at an output).
 template <int D>
 void Simulation<D>::refinement_step_start() {
   const auto x = p_.get(field::Position{});
@@ -140,7 +142,13 @@ void Simulation<D>::refinement_step_start() {
   const auto guard = p_.get(field::AprGuard{});
   const int n = n_own_;
   apr_.invalidate_weights();  // positions moved since the last step
+  bool pressure_fresh = false;
   const double moved = apr_.move(t_, steps_, [&](const RefinementZone& z, Vec3& at) {
+    if (z.criterion == ZoneCriterion::Pressure && !pressure_fresh) {
+      // the pressure of the current density (the stored one is the last stage's, or an output's)
+      detail::with_eos<D>(scene_, [&](auto eos) { update_pressure<D>(eos, p_.get(field::Density{}), P, n); });
+      pressure_fresh = true;
+    }
     apr::MaxInBox<D> f{{}, {}, z.criterion == ZoneCriterion::Speed, x, u, P, guard};
     for (int k = 0; k < D; ++k) {
       f.lo[k] = z.search.min[k];
@@ -164,7 +172,7 @@ void Simulation<D>::refinement_step_start() {
     for (int k = 0; k < D; ++k) at[k] = all[win * (D + 1) + 1 + k];
     return true;
   });
-  bool rebuild = !list_valid_ || moved > 0.5 * skin_len_;
+  bool rebuild = !list_valid_ || bookkeeping_due_ || moved > 0.5 * skin_len_;
   if (!rebuild) {
     double d2max = 0;
     Kokkos::parallel_reduce("ondine::NeighbourList::displacement", Kokkos::RangePolicy<ExecSpace>(0, n),
@@ -273,6 +281,9 @@ void Simulation<D>::update_free_surface_levels() {
   if (walls && level_wall_cells_.empty()) build_level_wall_cells();
   for (int l = 0; l < apr_.levels(); ++l) {
     const int b = apr_.first(l), e = apr_.active_end(l);
+    // a guard is no SPH particle: no free-surface flag (not a value left from when it was one)
+    if (p_.has(field::FreeSurface{}) && apr_.end(l) > e)
+      Kokkos::deep_copy(Kokkos::subview(p_.get(field::FreeSurface{}), std::make_pair(e, apr_.end(l))), 0.0);
     if (e == b) continue;
     const double Rl = apr_.R(l);
     if (walls)
