@@ -143,6 +143,10 @@ class Simulation {
   // SPH particles (guards excluded) and guards on this rank
   std::int64_t sph_particles() const;
 
+  // Several ranks with zones: migrate before an output, as if the lists had not been rebuilt.
+  // Public only because it holds KOKKOS_LAMBDAs, which nvcc refuses in a private member.
+  void relist_for_output();
+
  private:
   void fill(std::int64_t first, std::int64_t end);
   void load_checkpoint(const CheckpointSlice& restart);
@@ -167,7 +171,6 @@ class Simulation {
   // roles: computed at a bookkeeping, kept otherwise; several ranks: migration, sort by
   // (level, role), halos with their levels and roles, then the lists
   void rebuild_level_lists(bool roles, bool may_rebalance);
-  void relist_for_output();         // several ranks: migrate before an output, as if the lists had not been rebuilt
   void refresh_guard_halos();       // several ranks: the interpolated fields of the guards' halo copies
   void allocate_stage_storage();
   void update_free_surface_levels();
