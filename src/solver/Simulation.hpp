@@ -155,6 +155,8 @@ class Simulation {
   void ensure_neighbours();
   void rebuild_neighbours(bool may_rebalance);
   void decompose(bool by_pairs);
+  template <class Relist>
+  void check_balance(std::int64_t pairs, bool may_rebalance, Relist&& relist);
   void refresh_halos();
   void reorder_by_cell();
   double time_step() const;

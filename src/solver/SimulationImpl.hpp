@@ -408,23 +408,28 @@ void Simulation<D>::rebuild_neighbours(bool may_rebalance) {
   }
   list_valid_ = true;
   ++builds_;
-  if (!comm_.serial()) {
-    // tau = min work / max work over the ranks (thesis 5.30), work = pair interactions
-    std::vector<double> work;
-    const std::int64_t mine = scene_.balance_by_pairs ? static_cast<std::int64_t>(list_.total()) : n_own_;
-    for (std::int64_t w : comm_.gather_all(mine)) work.push_back(static_cast<double>(w));
-    tau_ = balance_indicator(work);
-    // rebalance below the threshold; when cell-wide cuts cannot reach it, only once
-    // the balance is clearly worse (0.05) than the last rebalance achieved
-    if (may_rebalance && tau_ < std::min(scene_.rebalance_threshold, achieved_tau_ - 0.05)) {
-      const double before = tau_;
-      decompose(scene_.balance_by_pairs);
-      ++rebalances_;
-      rebuild_neighbours(false);
-      achieved_tau_ = tau_;
-      if (comm_.rank() == 0)
-        std::fprintf(stderr, "ondine: step %lld: rebalanced, tau %.3f -> %.3f\n", static_cast<long long>(steps_), before, tau_);
-    }
+  if (!comm_.serial()) check_balance(static_cast<std::int64_t>(list_.total()), may_rebalance, [this] { rebuild_neighbours(false); });
+}
+
+// tau = min work / max work over the ranks (thesis 5.30), work = this rank's pair
+// interactions (`pairs`) or particles. Below the threshold the domain is bisected again
+// and `relist` rebuilds the lists; when cell-wide cuts cannot reach the threshold, only
+// once the balance is clearly worse (0.05) than the last rebalance achieved.
+template <int D>
+template <class Relist>
+void Simulation<D>::check_balance(std::int64_t pairs, bool may_rebalance, Relist&& relist) {
+  std::vector<double> work;
+  const std::int64_t mine = scene_.balance_by_pairs ? pairs : n_own_;
+  for (std::int64_t w : comm_.gather_all(mine)) work.push_back(static_cast<double>(w));
+  tau_ = balance_indicator(work);
+  if (may_rebalance && tau_ < std::min(scene_.rebalance_threshold, achieved_tau_ - 0.05)) {
+    const double before = tau_;
+    decompose(scene_.balance_by_pairs);
+    ++rebalances_;
+    relist();
+    achieved_tau_ = tau_;
+    if (comm_.rank() == 0)
+      std::fprintf(stderr, "ondine: step %lld: rebalanced, tau %.3f -> %.3f\n", static_cast<long long>(steps_), before, tau_);
   }
 }
 

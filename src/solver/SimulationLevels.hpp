@@ -58,21 +58,9 @@ void Simulation<D>::rebuild_level_lists(bool roles, bool may_rebalance) {
   list_valid_ = true;
   ++builds_;
   if (comm_.serial()) return;
-  std::vector<double> work;
-  const std::int64_t mine = scene_.balance_by_pairs
-                                ? static_cast<std::int64_t>(apr_.symmetric_list().total() + apr_.guard_list().total())
-                                : n_own_;
-  for (std::int64_t w : comm_.gather_all(mine)) work.push_back(static_cast<double>(w));
-  tau_ = balance_indicator(work);
-  if (may_rebalance && tau_ < std::min(scene_.rebalance_threshold, achieved_tau_ - 0.05)) {
-    const double before = tau_;
-    decompose(scene_.balance_by_pairs);
-    ++rebalances_;
-    rebuild_level_lists(false, false);  // the roles just computed are kept
-    achieved_tau_ = tau_;
-    if (comm_.rank() == 0)
-      std::fprintf(stderr, "ondine: step %lld: rebalanced, tau %.3f -> %.3f\n", static_cast<long long>(steps_), before, tau_);
-  }
+  // the work of a rank: its L. and Lx entries; the roles just computed are kept on a rebalance
+  check_balance(static_cast<std::int64_t>(apr_.symmetric_list().total() + apr_.guard_list().total()), may_rebalance,
+                [this] { rebuild_level_lists(false, false); });
 }
 
 // Several ranks, before an output: owned positions are wrapped into the periodic box
