@@ -7,13 +7,18 @@
 // (The reaction of the particles' wall terms is not used: with the 1/gamma_i
 // Shepard factors the fluid-fluid terms do not cancel pairwise, so it would not
 // be the force on the wall.)
+// With refinement zones (Levels = true; docs/apr.md) the sums run over the SPH
+// particles only, each with its own level's radius R_l (and d_n bounded at 0.05 R_l),
+// as the probes do: a guard or a mother guard would count the same fluid twice, and
+// a fine wall region is then sampled at the fine radius, not at the coarse one.
 #include "kernels/NeighbourLoops.hpp"
 #include "kernels/WallPressure.hpp"
 #include "kernels/WallSet.hpp"
+#include "kernels/apr/RefinementZones.hpp"
 
 namespace ondine {
 
-template <int D, class Kernel>
+template <int D, class Kernel, bool Levels = false>
 struct WallTraction {
   WallPoints<D> wall;
   CellList<D> cells;  // particle cell list
@@ -29,6 +34,10 @@ struct WallTraction {
   field_view_t<field::Mass, D> m;
   field_view_t<field::DensityGradient, D> grad_rho;
   Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace> traction;  // (q, 2D): pressure force, viscous force
+  // Levels only: Kernel is the scene's kernel at R = 1, R2 the coarsest level's R^2
+  RefinementZones<D> zones = {};
+  field_view_t<field::AprBirthLevel, D> birth = {};
+  field_view_t<field::AprGuard, D> guard = {};
 
   KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
     const Vec<D> xq = load<D>(wall.x, q), n = load<D>(wall.n_out, q), uq = load<D>(wall.u, q);
@@ -37,11 +46,23 @@ struct WallTraction {
     for_each_point_within<D>(cells, box, x, xq, R2, [&](const int i, const Vec<D>& xqi, const double r) {
       const Vec<D> xiq = -1.0 * xqi;  // x_i - x_q
       const double rho_i = rho(i);
-      const double w = m(i) / rho_i * W.value(r);
+      double Wr, dn_min = min_dn;
+      if constexpr (Levels) {
+        if (guard(i)) return;
+        const double Ri = zones.R[birth(i)];
+        if (r >= Ri) return;
+        double RD = 1.0;
+        for (int k = 0; k < D; ++k) RD *= Ri;
+        Wr = W.value(r / Ri) / RD;
+        dn_min = 0.05 * Ri;
+      } else {
+        Wr = W.value(r);
+      }
+      const double w = m(i) / rho_i * Wr;
       const double c2 = eos.c2(rho_i);
       const Vec<D> ui = load<D>(u, i);
       sp += w * normal_flux_pressure<D>(rho_i, P(i), c2, kmath::sqrt(c2), load<D>(grad_rho, i), xiq, ui, uq, n);
-      sv += (-w / fluid_side_dn<D>(xiq, n, min_dn)) * (ui - uq);
+      sv += (-w / fluid_side_dn<D>(xiq, n, dn_min)) * (ui - uq);
       sw += w;
     });
     const double s = wall.s(q);

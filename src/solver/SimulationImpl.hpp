@@ -982,14 +982,25 @@ std::vector<WallForce> Simulation<D>::wall_forces() {
   const int nq = walls_.points().count;
   const double nu = scene_.viscous_term != ViscousTerm::None ? scene_.nu : 0.0;
   Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace> traction("ondine::NFM::traction", nq, 2 * D);
-  with_kernel<D>(scene_.kernel, R_, [&](auto W) {
-    Kokkos::parallel_for("ondine::NFM::wall_traction", Kokkos::RangePolicy<ExecSpace>(0, nq),
-                         WallTraction<D, decltype(W)>{walls_.points(), cells_, W, R_ * R_, nu, scene_.rho0,
-                                                      wall_eos(), 0.05 * R_, box_, p_.get(field::Position{}),
-                                                      p_.get(field::Velocity{}), p_.get(field::Density{}),
-                                                      p_.get(field::Pressure{}), p_.get(field::Mass{}),
-                                                      p_.get(field::DensityGradient{}), traction});
-  });
+  if (apr_on_)  // each SPH particle with its level's radius (WallForces.hpp)
+    with_kernel<D>(scene_.kernel, 1.0, [&](auto W1) {
+      Kokkos::parallel_for("ondine::NFM::wall_traction", Kokkos::RangePolicy<ExecSpace>(0, nq),
+                           WallTraction<D, decltype(W1), true>{walls_.points(), cells_, W1, R_ * R_, nu, scene_.rho0,
+                                                               wall_eos(), 0.05 * R_, box_, p_.get(field::Position{}),
+                                                               p_.get(field::Velocity{}), p_.get(field::Density{}),
+                                                               p_.get(field::Pressure{}), p_.get(field::Mass{}),
+                                                               p_.get(field::DensityGradient{}), traction, apr_.zones(),
+                                                               p_.get(field::AprBirthLevel{}), p_.get(field::AprGuard{})});
+    });
+  else
+    with_kernel<D>(scene_.kernel, R_, [&](auto W) {
+      Kokkos::parallel_for("ondine::NFM::wall_traction", Kokkos::RangePolicy<ExecSpace>(0, nq),
+                           WallTraction<D, decltype(W)>{walls_.points(), cells_, W, R_ * R_, nu, scene_.rho0,
+                                                        wall_eos(), 0.05 * R_, box_, p_.get(field::Position{}),
+                                                        p_.get(field::Velocity{}), p_.get(field::Density{}),
+                                                        p_.get(field::Pressure{}), p_.get(field::Mass{}),
+                                                        p_.get(field::DensityGradient{}), traction});
+    });
   // several ranks: each wall point is counted by the rank that owns its cell (its
   // support is complete there: owned particles and halos)
   Kokkos::View<int*, MemSpace> counted("ondine::NFM::counted", nq);
