@@ -8,7 +8,9 @@
 #include <iostream>
 
 #include "app/BuildInfo.hpp"
+#include "app/KernelProfile.hpp"
 #include "app/Validate.hpp"
+#include "io/AtomicFile.hpp"
 #include "io/Checkpoint.hpp"
 #include "scene/CaseFile.hpp"
 #include "solver/Runner.hpp"
@@ -31,11 +33,12 @@ int run_app(int argc, char** argv, int ranks, int rank) {
   auto* run = app.add_subcommand("run", "run a case file to completion");
   std::string case_file, out_dir, restart;
   std::vector<std::string> sets;
-  bool quiet = false;
+  bool quiet = false, profile = false;
   run->add_option("CASE", case_file, "YAML case file (see docs/case-file.md)")->required();
   run->add_option("--out", out_dir, "output folder (default: out/<case name>)");
   run->add_option("--set", sets, "override a case key, e.g. --set discretisation.dx=0.01 (repeatable)");
   run->add_flag("--quiet", quiet, "no progress line");
+  run->add_flag("--profile", profile, "wall time of every Kokkos kernel (rank 0's) -> OUT/profile_kernels.json");
   run->add_option("--restart", restart, "continue from a checkpoint (OUT/checkpoint.h5), on any number of ranks");
   auto* validate = app.add_subcommand("validate", "run the validation cases over a resolution ladder (docs/validation.md)");
   ondine::ValidateOptions vopt;
@@ -80,6 +83,7 @@ int run_app(int argc, char** argv, int ranks, int rank) {
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   ondine::RunReport r;
+  if (profile) ondine::install_kernel_profile();
   try {
     r = ondine::run_scene(scene, opt);
   } catch (const ondine::CheckpointError& e) {
@@ -91,6 +95,18 @@ int run_app(int argc, char** argv, int ranks, int rank) {
                  r.particles, static_cast<long long>(r.steps), r.simulated_time, r.wall_seconds,
                  r.wall_seconds > 0 ? r.particles * static_cast<double>(r.steps) / r.wall_seconds : 0.0);
     for (const auto& [name, value] : r.errors) std::fprintf(stderr, "  %s = %.6g\n", name.c_str(), value);
+    if (profile) {
+      nlohmann::json j = ondine::kernel_profile_report();
+      j["steps"] = r.steps;
+      j["wall_seconds"] = r.wall_seconds;
+      j["ranks"] = ranks;
+      ondine::write_text_atomically(opt.out_dir + "/profile_kernels.json", j.dump(2) + "\n");
+      std::fprintf(stderr, "ondine: kernel time %.3g s of %.3g s wall (%s/profile_kernels.json)", j["kernel_seconds"].get<double>(),
+                   r.wall_seconds, opt.out_dir.c_str());
+      if (j["groups"].contains("guard_interpolation"))
+        std::fprintf(stderr, "; guard interpolation %.1f %%", 100 * j["groups"]["guard_interpolation"]["share"].get<double>());
+      std::fprintf(stderr, "\n");
+    }
     if (r.status == "interrupted")
       std::fprintf(stderr, "ondine: stopped by signal %d; continue with: ondine run %s --restart %s/checkpoint.h5\n", r.signal,
                    case_file.c_str(), opt.out_dir.c_str());
