@@ -8,7 +8,10 @@ folders are copied, validation.json gets the runs and orders of every source (in
 the order given), validation.md the table rows, APR comparison lines and orders
 of every source, and the figures are drawn again by plot_validation.py.
 
-usage: merge_validation.py DEST SRC [SRC ...]
+usage: merge_validation.py [--replace] DEST SRC [SRC ...]
+--replace: a case found in a later source replaces the same case of the earlier ones
+(its runs, table rows, comparison lines and orders; to re-run some cases of a report);
+without it a case in two sources is an error.
 Then `scripts/plot_validation.py DEST . --docs docs/validation.md` puts DEST into the report.
 """
 import json
@@ -37,6 +40,8 @@ def parts(md_path):
 
 
 def main(argv):
+    replace = "--replace" in argv
+    argv = [a for a in argv if a != "--replace"]
     if len(argv) < 2:
         sys.exit(__doc__)
     dest, sources = argv[0], argv[1:]
@@ -52,8 +57,19 @@ def main(argv):
             sys.exit(f"merge_validation.py: {path}: level '{j['level']}', expected '{merged['level']}' like the others")
         merged["level"] = j["level"]
         twice = {r["case"] for r in j["runs"]} & {r["case"] for r in merged["runs"]}
-        if twice:
+        if twice and not replace:
             sys.exit(f"merge_validation.py: {path}: case(s) {', '.join(sorted(twice))} already in an earlier source")
+        if twice:  # drop the earlier sources' entries of these cases
+            def of(line):  # the case a table row, comparison line or order line is about
+                return line.lstrip("|- ").split(" ")[0].split("/")[0]
+            merged["runs"] = [r for r in merged["runs"] if r["case"] not in twice]
+            merged["orders"] = {k: v for k, v in merged["orders"].items() if k not in twice}
+            rows = [x for x in rows if of(x) not in twice]
+            compare = [x for x in compare if of(x) not in twice]
+            orders = [x for x in orders if of(x) not in twice]
+            for case in twice:
+                shutil.rmtree(os.path.join(dest, case), ignore_errors=True)
+            print(f"merge_validation.py: {path} replaces {', '.join(sorted(twice))}")
         merged["runs"] += j["runs"]
         merged["orders"].update(j["orders"])
         r, c, o = parts(os.path.join(src, "validation.md"))

@@ -55,8 +55,12 @@ std::map<std::string, double> stable(std::map<std::string, double> extra) {
 
 const std::vector<ValidationCase>& catalogue() {
   static const std::vector<ValidationCase> c = {
+      // At Ma = 0.1 (the case file's c0 = 10 m/s) the weakly-compressible error, O(Ma^2), is the floor
+      // of the ladder: velocity_l2 0.0171, 0.0064, 0.0078 at 25, 50, 100. The ladder runs at Ma = 0.05
+      // (c0 = 20 m/s), where the finest rung is below that floor: 0.0180, 0.0067, 0.0041 (c0 = 40 m/s
+      // at 100: 0.0040, so the spatial error dominates there; docs/validation.md)
       {"taylor_green_2d", "cases/taylor_green_2d.yaml", 1.0, {{0.04, false}, {0.02, false}, {0.01, true}},
-       {{"velocity_l2", 0.05}, {"mass_drift", 1e-12}}, {}},
+       {{"velocity_l2", 0.05}, {"mass_drift", 1e-12}}, {"fluid.sound_speed=20"}},
       {"poiseuille_2d", "cases/poiseuille_2d.yaml", 1.0, {{0.04, false}, {0.02, false}, {0.01, true}},
        {{"velocity_l2", 0.01}}, {}},
       {"hydrostatic_tank_2d", "cases/hydrostatic_tank_2d.yaml", 0.5, {{0.05, false}, {0.025, false}, {0.0125, true}},
