@@ -44,8 +44,8 @@ for r in runs:
         if "u_exact" in p:  # L2 over particles of u - u_exact
             num = sum((u - x) ** 2 for u, x in zip(p["u"], p["u_exact"]))
             close((num / sum(x * x for x in p["u_exact"])) ** 0.5, e["velocity_l2"], d + " velocity_l2")
-        elif "p_exact" in p:  # deeper than 3 dx, over rho g H (H = resolution dx, g = 9.81 in the cases)
-            rgh = r["rho0"] * 9.81 * r["resolution"] * r["dx"]
+        elif "p_exact" in p:  # deeper than 3 dx, over rho g H (g = 9.81 in the cases; H = z + p_exact / (rho g))
+            rgh = r["rho0"] * 9.81 * (p["z"][0] + p["p_exact"][0] / (r["rho0"] * 9.81))
             worst = max(abs(a - b) for a, b in zip(p["p"], p["p_exact"]) if b >= 3 * r["dx"] * r["rho0"] * 9.81)
             close(worst / rgh, e["pressure_linf"], d + " pressure_linf")
         elif "max_speed_exact" in p:

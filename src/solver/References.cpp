@@ -39,6 +39,16 @@ double ls_slope(const std::vector<std::pair<double, double>>& s, double lo, doub
 }
 }  // namespace
 
+double polygon_area(const std::vector<std::array<double, 2>>& points) {
+  double a = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const auto& p = points[k];
+    const auto& q = points[(k + 1) % points.size()];
+    a += p[0] * q[1] - q[0] * p[1];
+  }
+  return 0.5 * std::abs(a);
+}
+
 std::map<std::string, double> martin_moyce_errors(const std::vector<std::pair<double, double>>& front) {
   std::map<std::string, double> e;
   double worst = 0;

@@ -1,5 +1,6 @@
 #pragma once
 // Reference solutions computed in code, and published data typed in with their source.
+#include <array>
 #include <map>
 #include <string>
 #include <utility>
@@ -20,6 +21,9 @@ const std::vector<std::pair<double, double>>& martin_moyce_front();
 // front_max_relative_error (max |Z - Z_exp| / Z_exp), front_speed (least-squares dZ/dT over
 // 1.5 <= T <= 3) and front_speed_relative_error against the experiment's slope there.
 std::map<std::string, double> martin_moyce_errors(const std::vector<std::pair<double, double>>& front);
+
+// Area of a simple polygon (shoelace formula; either orientation), m^2.
+double polygon_area(const std::vector<std::array<double, 2>>& points);
 
 // Numeric rows of a CSV file ('#' comments and the header line skipped).
 std::vector<std::vector<double>> read_table(const std::string& path);

@@ -368,6 +368,31 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
   }
   if (dam_break && report.status != "diverged")
     for (const auto& [k, v] : reference::martin_moyce_errors(front)) report.errors[k] = v;
+  if (D == 2 && scene.reference.kind == ReferenceKind::Hydrostatic && sim.has_walls() && report.status != "diverged") {
+    // Still water: the force on a body (a closed wall with the fluid outside) lying wholly
+    // under the surface y = origin_y + H is Archimedes' -rho0 g A. buoyancy_error:
+    // |F_pressure + F_viscous - (-rho0 g A)| / (rho0 |g| A), the largest over such bodies.
+    const double surface = scene.reference.origin[1] + scene.reference.length;
+    const auto forces = sim.wall_forces();
+    double worst = -1;
+    for (const Wall& w : scene.walls) {
+      bool below = w.closed && !w.fluid_inside;
+      for (const auto& pt : w.points) below = below && pt[1] < surface;
+      if (!below) continue;
+      const double A = reference::polygon_area(w.points);
+      const double gn = std::hypot(scene.gravity[0], scene.gravity[1]);
+      for (const WallForce& f : forces) {
+        if (f.name != w.name) continue;
+        double e2 = 0;
+        for (int k = 0; k < 2; ++k) {
+          const double d = f.pressure[k] + f.viscous[k] + scene.rho0 * scene.gravity[k] * A;
+          e2 += d * d;
+        }
+        worst = std::max(worst, std::sqrt(e2) / (scene.rho0 * gn * A));
+      }
+    }
+    if (worst >= 0) report.errors["buoyancy_error"] = worst;
+  }
 
   nlohmann::json j;
   j["case"] = scene.name;
