@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "app/KernelProfile.hpp"
 #include "scene/CaseFile.hpp"
 #include "solver/Simulation.hpp"
 
@@ -25,27 +26,11 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-// Kokkos tool callbacks: wall time spent in neighbour-search kernels, and the
-// bytes held by Views other than the neighbour list. Kernels on the OpenMP
-// backend are synchronous, so begin/end timing is the kernel's time.
+// Bytes held by Views other than the neighbour list, from Kokkos' allocation
+// callbacks; the time in neighbour-search kernels comes from the kernel profile
+// of `ondine run --profile` (src/app/KernelProfile.hpp).
 struct Instrument {
-  static inline double search_seconds = 0;
-  static inline Clock::time_point began;
-  static inline bool in_search = false;
   static inline std::map<const void*, std::pair<std::string, uint64_t>> live;
-  static bool is_search(const char* name) {
-    const std::string s(name);
-    return s.rfind("ondine::CellList", 0) == 0 || s.rfind("ondine::NeighbourList", 0) == 0;
-  }
-  static void begin(const char* name, const uint32_t, uint64_t* id) {
-    *id = 0;
-    in_search = is_search(name);
-    if (in_search) began = Clock::now();
-  }
-  static void end(const uint64_t) {
-    if (in_search) search_seconds += std::chrono::duration<double>(Clock::now() - began).count();
-    in_search = false;
-  }
   static void alloc(const Kokkos::Tools::SpaceHandle, const char* label, const void* ptr, const uint64_t size) {
     live[ptr] = {label, size};
   }
@@ -56,14 +41,10 @@ struct Instrument {
       if (v.first.find("NeighbourList") == std::string::npos) b += static_cast<double>(v.second);
     return b;
   }
+  static double search_seconds() { return kernel_seconds({"ondine::CellList", "ondine::NeighbourList"}); }
   static void install() {
+    install_kernel_profile();
     namespace KT = Kokkos::Tools::Experimental;
-    KT::set_begin_parallel_for_callback(begin);
-    KT::set_begin_parallel_reduce_callback(begin);
-    KT::set_begin_parallel_scan_callback(begin);
-    KT::set_end_parallel_for_callback(end);
-    KT::set_end_parallel_reduce_callback(end);
-    KT::set_end_parallel_scan_callback(end);
     KT::set_allocate_data_callback(alloc);
     KT::set_deallocate_data_callback(dealloc);
   }
@@ -148,14 +129,14 @@ nlohmann::json measure(const std::string& name, int per_side, double R_over_dx, 
     double wall = 0;
     for (int r = 0; r < reps; ++r) {
       Kokkos::fence();
-      Instrument::search_seconds = 0;
+      reset_kernel_profile();
       const auto t0 = Clock::now();
       for (int st = 0; st < steps; ++st) s2.step(1.0);
       Kokkos::fence();
       const double t = std::chrono::duration<double>(Clock::now() - t0).count();
       wall += t;
       t_step.push_back(t / steps);
-      f_search.push_back(Instrument::search_seconds / t);
+      f_search.push_back(Instrument::search_seconds() / t);
     }
     const std::string key = skin == 0 ? "rebuild_every_evaluation" : "verlet_skin_0.3dx";
     j["strategies"][key] = {{"steps", steps * reps},

@@ -60,6 +60,19 @@ void install_kernel_profile() {
   KT::set_end_parallel_scan_callback(end);
 }
 
+void reset_kernel_profile() { table().clear(); }
+
+double kernel_seconds(const std::vector<std::string>& prefixes) {
+  double s = 0;
+  for (const auto& [name, e] : table())
+    for (const std::string& p : prefixes)
+      if (name.rfind(p, 0) == 0) {
+        s += e.seconds;
+        break;
+      }
+  return s;
+}
+
 nlohmann::json kernel_profile_report() {
   std::vector<std::pair<std::string, Entry>> rows(table().begin(), table().end());
   std::sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.second.seconds > b.second.seconds; });

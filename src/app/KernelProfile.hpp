@@ -5,9 +5,12 @@
 // separate kokkos-tools project, which Debian does not package (docs/output.md).
 #include <nlohmann/json.hpp>
 
+#include <string>
+#include <vector>
+
 namespace ondine {
 
-// Installs the callbacks (once, before the run). Each kernel is fenced at its end so
+// Installs the kernel callbacks (once, before the run; perf/bench_flux.cpp also uses them). Each kernel is fenced at its end so
 // that device backends report the kernel's time, not its launch's.
 void install_kernel_profile();
 
@@ -16,5 +19,10 @@ void install_kernel_profile();
 // the name up to its second "::" (e.g. ondine::APR), plus "guard_interpolation"
 // (ondine::APR::GuardWeights and ::GuardInterpolation, thesis 5.24).
 nlohmann::json kernel_profile_report();
+
+// Forgets the times measured so far; the seconds spent in kernels whose name starts with
+// one of `prefixes` since then.
+void reset_kernel_profile();
+double kernel_seconds(const std::vector<std::string>& prefixes);
 
 }  // namespace ondine
