@@ -29,6 +29,10 @@ print(f"APR counters (mothers refined, daughters deleted since t = 0): step {fir
 assert h["deleted"] > 0, "no derefinement before the first stop: the checkpoint does not test much"
 assert w["refined"] > h["refined"] and w["deleted"] > h["deleted"], "no refinement or no derefinement after the first stop"
 assert p == w, f"the APR counters differ: uninterrupted {w}, restarted {p}"
+# counters of the whole run that the checkpoint carries too
+for k in ("families_moved_off_walls", "wall_corrections"):
+    print(f"{k}: uninterrupted {whole['errors'][k]:g}, restarted {parts['errors'][k]:g}")
+    assert parts["errors"][k] == whole["errors"][k], f"{k} differs"
 EOF
 a=$(ls "$out/whole"/*_0*.h5 | sort | tail -1); b=$(ls "$out/parts"/*_0*.h5 | sort | tail -1)
 echo "uninterrupted vs stopped and restarted every $every steps, last snapshot, every dataset:"

@@ -20,6 +20,7 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, std::i
   f.attribute("initial_momentum_y", h.initial_momentum[1]);
   f.attribute("initial_momentum_z", h.initial_momentum[2]);
   f.attribute("checksum", h.checksum);
+  f.attribute("wall_corrections", h.wall_corrections);
   std::vector<std::string> names = checkpoint_fields();
   if (h.refinement.present) {
     const CheckpointRefinement& a = h.refinement;
@@ -27,6 +28,7 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, std::i
     f.attribute("refinement_next_id", a.next_id);
     f.attribute("refinement_refined", a.refined);
     f.attribute("refinement_deleted", a.deleted);
+    f.attribute("refinement_families_moved", a.families_moved);
     f.attribute("refinement_momentum_change", std::vector<double>(a.momentum_change, a.momentum_change + 3));
     f.attribute("refinement_momentum_scale", a.momentum_scale);
     f.attribute("refinement_zone_offset", a.offset);
@@ -63,6 +65,8 @@ CheckpointSlice read_checkpoint(const std::string& path, const Communicator& com
     h.initial_momentum[1] = r.attribute_double("initial_momentum_y");
     h.initial_momentum[2] = r.attribute_double("initial_momentum_z");
     h.checksum = r.attribute_u64("checksum");
+    // counters added after the format's first files: 0 when absent
+    h.wall_corrections = r.has("wall_corrections") ? r.attribute_int("wall_corrections") : 0;
     std::vector<std::string> names = checkpoint_fields();
     if (r.has("refinement_zones")) {
       // written by a run with refinement zones: its APR state and fields (all of them)
@@ -72,6 +76,7 @@ CheckpointSlice read_checkpoint(const std::string& path, const Communicator& com
       a.next_id = r.attribute_int("refinement_next_id");
       a.refined = r.attribute_int("refinement_refined");
       a.deleted = r.attribute_int("refinement_deleted");
+      a.families_moved = r.has("refinement_families_moved") ? r.attribute_int("refinement_families_moved") : 0;
       const std::vector<double> dp = r.attribute_doubles("refinement_momentum_change");
       if (dp.size() != 3) throw CheckpointError(path + ": attribute 'refinement_momentum_change' does not have 3 values");
       for (int k = 0; k < 3; ++k) a.momentum_change[k] = dp[k];

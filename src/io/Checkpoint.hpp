@@ -31,6 +31,7 @@ struct CheckpointRefinement {
   std::int64_t next_id = 0;           // global id of the next daughter
   std::int64_t refined = 0;           // mothers refined since t = 0
   std::int64_t deleted = 0;           // daughters deleted since t = 0
+  std::int64_t families_moved = 0;    // families moved off a wall since t = 0 (DaughterWallClearance)
   double momentum_change[3] = {0, 0, 0};  // sum over refinements of sum_f m_f u_f - m_m u_m
   double momentum_scale = 0;              // sum over refinements of m_m |u_m|
   std::vector<double> offset;        // zones x 3: displacement of each zone from its case-file box (m)
@@ -49,6 +50,7 @@ struct CheckpointHeader {
   double initial_mass = 0;
   double initial_momentum[3] = {0, 0, 0};
   std::uint64_t checksum = 0;  // of the state fields (kernels/StateHash.hpp)
+  std::int64_t wall_corrections = 0;  // impermeability corrections since t = 0, all ranks (kernels/WallImpermeability.hpp)
   CheckpointRefinement refinement;
 };
 

@@ -98,6 +98,7 @@ class AdaptiveRefinement {
     c.next_id = next_id_;
     c.refined = refined_;
     c.deleted = deleted_;
+    c.families_moved = families_moved_;
     for (int a = 0; a < 3; ++a) c.momentum_change[a] = a < D ? momentum_change_[a] : 0.0;
     c.momentum_scale = momentum_scale_;
     c.offset.assign(3 * scene_zones_.size(), 0.0);
@@ -119,6 +120,7 @@ class AdaptiveRefinement {
     next_id_ = c.next_id;
     refined_ = c.refined;
     deleted_ = c.deleted;
+    families_moved_ = c.families_moved;
     for (int a = 0; a < D; ++a) momentum_change_[a] = c.momentum_change[a];
     momentum_scale_ = c.momentum_scale;
     for (std::size_t z = 0; z < scene_zones_.size(); ++z)

@@ -273,6 +273,7 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
     h.initial_mass = d0.mass;
     for (int k = 0; k < 3; ++k) h.initial_momentum[k] = d0.momentum[k];
     h.checksum = sim.state_checksum();
+    h.wall_corrections = sim.wall_corrections();
     if (sim.refinement_on()) {
       h.refinement = sim.refinement_state();
       h.refinement.zones = refinement_zone_text(scene);

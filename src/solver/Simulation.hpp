@@ -123,6 +123,8 @@ class Simulation {
   // NFM walls
   bool has_walls() const { return !walls_.empty(); }
   std::vector<WallForce> wall_forces();
+  // impermeability corrections since t = 0 (kernels/WallImpermeability.hpp), all ranks; carried by checkpoints
+  std::int64_t wall_corrections() const { return comm_.sum(wall_corrections_); }
   // particles on the solid side of a wall or closer than `clearance` (default 0.1 dx) to one
   std::int64_t wall_leaks(double clearance = -1) const;
   // free-surface flag (4.86-4.87) into field::FreeSurface, at output times

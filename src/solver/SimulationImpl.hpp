@@ -154,6 +154,7 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
     stage_time_ = t_;
     initial_.mass = restart->header.initial_mass;
     for (int k = 0; k < 3; ++k) initial_.momentum[k] = restart->header.initial_momentum[k];
+    wall_corrections_ = comm_.rank() == 0 ? restart->header.wall_corrections : 0;  // a global count, carried by rank 0
     if (walls_.moving()) update_walls(t_);
   }
 }
@@ -1184,7 +1185,7 @@ std::map<std::string, double> Simulation<D>::errors() const {
     e["wall_leaks"] = static_cast<double>(wall_leaks());
     e["wall_crossings"] = static_cast<double>(wall_leaks(0.0));  // on the solid side of a wall only
     if (apr_on_) e["families_moved_off_walls"] = static_cast<double>(apr_.families_moved());
-    e["wall_corrections"] = static_cast<double>(comm_.sum(wall_corrections_));
+    e["wall_corrections"] = static_cast<double>(wall_corrections());
   }
   const Reference& ref = scene_.reference;
   const int n = n_own_;
