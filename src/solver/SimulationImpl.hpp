@@ -1173,6 +1173,7 @@ std::map<std::string, double> Simulation<D>::errors() const {
     e["wall_leaks"] = static_cast<double>(wall_leaks());
     e["wall_crossings"] = static_cast<double>(wall_leaks(0.0));  // on the solid side of a wall only
     if (apr_on_) e["families_moved_off_walls"] = static_cast<double>(apr_.families_moved());
+    if (apr_on_ && scene_.refinement_guard_shifting) e["guard_shifts"] = static_cast<double>(comm_.sum(apr_.guard_shifts()));
     e["wall_corrections"] = static_cast<double>(comm_.sum(wall_corrections_));
   }
   const Reference& ref = scene_.reference;
