@@ -1,6 +1,7 @@
 // Adaptive particle refinement (thesis 5.4; docs/apr.md): conservation through
 // refinement and derefinement, exactness of the guard interpolation on linear
-// and quadratic fields, a uniform flow crossing a refinement box, and the structure of the
+// and quadratic fields, a uniform flow crossing a refinement box, the shifting of disordered
+// daughter guards (kernels/apr/GuardSpacing.hpp), and the structure of the
 // interaction lists (no symmetric pair with two radii).
 #include <catch2/catch.hpp>
 
