@@ -65,6 +65,7 @@ class AdaptiveRefinement {
   std::int64_t refined() const { return refined_; }    // mothers refined so far
   std::int64_t deleted() const { return deleted_; }    // daughters deleted so far
   std::int64_t families_moved() const { return families_moved_; }  // moved off a wall (DaughterWallClearance)
+  std::int64_t guard_shifts() const { return guard_shifts_; }  // daughter guards shifted (GuardSpacing), summed over steps
   double interpolation_seconds() const { return interp_seconds_; }
   // sum over all refinements of sum_f m_f u_f - m_m u_m (component a), and of m_m |u_m|
   double momentum_change(int a) const { return momentum_change_[a]; }
@@ -311,6 +312,9 @@ class AdaptiveRefinement {
     Kokkos::fence();
     interp_seconds_ += timer.seconds();
   }
+  // daughter guards moved by GuardSpacing (kernels/apr/GuardSpacing.hpp), counted by the caller
+  void count_guard_shifts(std::int64_t moved) { guard_shifts_ += moved; }
+
   // positions moved (a new step): the shape functions are recomputed at the next interpolation
   void invalidate_weights() { weights_valid_ = false; }
   // per guard (owned index): fitted at R_m since the last list build (kept across a migration)
@@ -389,7 +393,7 @@ private:
   Kokkos::View<int*, MemSpace> wide_saved_;  // wide_ before an output (save_wide_flags)
   Kokkos::View<int*, MemSpace> used_;  // per guard: its Lx entries within the interpolation radius (first in its row)
   bool weights_valid_ = false;
-  std::int64_t next_id_ = 0, refined_ = 0, deleted_ = 0, families_moved_ = 0;
+  std::int64_t next_id_ = 0, refined_ = 0, deleted_ = 0, families_moved_ = 0, guard_shifts_ = 0;
   double interp_seconds_ = 0;
   double momentum_change_[D] = {}, momentum_scale_ = 0;
 };

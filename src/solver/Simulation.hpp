@@ -171,6 +171,7 @@ class Simulation {
   WallEos wall_eos() const;
   FluxArgs<D> state_flux_args(int n);
   void refinement_step_start();
+  long space_guards();  // kernels/apr/GuardSpacing.hpp: the daughter guards shifted once per step
   void refinement_bookkeeping();
   // roles: computed at a bookkeeping, kept otherwise; several ranks: migration, sort by
   // (level, role), halos with their levels and roles, then the lists
@@ -223,6 +224,7 @@ class Simulation {
   Diagnostics initial_;
   AdaptiveRefinement<D> apr_;
   bool apr_on_ = false;
+  Kokkos::View<double* [D], Kokkos::LayoutRight, MemSpace> guard_shift_;  // per particle: GuardSpacing's shift
   std::vector<CellList<D>> level_wall_cells_;  // APR with walls: wall points binned at each level's radius
 };
 

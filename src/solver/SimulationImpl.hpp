@@ -134,6 +134,7 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
     // the bookkeeping that the saved run would have done after writing the checkpoint.
     apr_ = AdaptiveRefinement<D>(scene_, box_, skin_len_);
     apr_.restore(p_, n_own_, restart->header.refinement);
+    apr_.count_guard_shifts(comm_.rank() == 0 ? restart->header.refinement.guard_shifts : 0);
     list_valid_ = false;
     bookkeeping_due_ = true;
   } else if (apr_on_) {
@@ -321,6 +322,7 @@ CheckpointRefinement Simulation<D>::refinement_state() const {
   CheckpointRefinement c;
   if (!apr_on_) return c;
   apr_.save_state(c);
+  c.guard_shifts = comm_.sum(apr_.guard_shifts());  // a global count (each rank counts its own)
   c.checksum = refinement_checksum();
   return c;
 }
@@ -1185,6 +1187,7 @@ std::map<std::string, double> Simulation<D>::errors() const {
     e["wall_leaks"] = static_cast<double>(wall_leaks());
     e["wall_crossings"] = static_cast<double>(wall_leaks(0.0));  // on the solid side of a wall only
     if (apr_on_) e["families_moved_off_walls"] = static_cast<double>(apr_.families_moved());
+    if (apr_on_ && scene_.refinement_guard_shifting) e["guard_shifts"] = static_cast<double>(comm_.sum(apr_.guard_shifts()));
     e["wall_corrections"] = static_cast<double>(wall_corrections());
   }
   const Reference& ref = scene_.reference;

@@ -5,6 +5,7 @@
 // SPH particles first, then its guards; every existing pass runs once per level
 // over that level's SPH particles, with the level's radius R_l = R_0 / 2^l and
 // the symmetric list L. (so its pair loop is the uniform one, with no test).
+#include "kernels/apr/GuardSpacing.hpp"
 #include "kernels/apr/LevelSums.hpp"
 
 namespace ondine {
@@ -168,6 +169,56 @@ void Simulation<D>::refinement_step_start() {
     rebuild = comm_.max(d2max) >= 0.25 * skin_len_ * skin_len_;
   }
   if (rebuild) refinement_bookkeeping();
+  // with refinement.guard_shifting: the daughter guards shifted towards a regular
+  // arrangement (kernels/apr/GuardSpacing.hpp), from fresh halo positions; the halos
+  // then carry the new positions
+  if (!scene_.refinement_guard_shifting) return;
+  refresh_halos();
+  if (space_guards() > 0 || !comm_.serial()) halos_fresh_ = false;
+}
+
+// The daughter guards of each level l >= 1 shifted (kernels/apr/GuardSpacing.hpp) from
+// the positions of the owned particles and the halos (cells_ of the last list build,
+// fresh positions); returns the number of guards moved on this rank. The shape
+// functions of the guard interpolation are recomputed at the next stage.
+template <int D>
+long Simulation<D>::space_guards() {
+  long total = 0;
+  if (apr_.levels() < 2 || !scene_.refinement_guard_shifting) return 0;
+  const int n_all = static_cast<int>(p_.size());
+  if (static_cast<int>(guard_shift_.extent(0)) < n_all)
+    guard_shift_ = Kokkos::View<double* [D], Kokkos::LayoutRight, MemSpace>("ondine::APR::guard_shift", n_all + n_all / 8);
+  const bool walls = !walls_.empty();
+  if (walls && level_wall_cells_.empty()) build_level_wall_cells();
+  const auto x = p_.get(field::Position{});
+  for (int l = 1; l < apr_.levels(); ++l) {
+    const int b = apr_.active_end(l), e = apr_.end(l);
+    if (e == b) continue;
+    const double Rl = apr_.R(l), dxl = apr_.dx(l);
+    if (walls)
+      Kokkos::parallel_for("ondine::NFM::ShepardGamma", Kokkos::RangePolicy<ExecSpace>(b, e),
+                           ShepardGammaPass<D>{walls_.segments(), Rl, box_, x, p_.get(field::ShepardGamma{})});
+    long moved = 0;
+    with_kernel<D>(scene_.kernel, 1.0, [&](auto W1) {
+      auto run = [&](auto f) { Kokkos::parallel_reduce("ondine::APR::GuardSpacing", Kokkos::RangePolicy<ExecSpace>(b, e), f, moved); };
+      if (walls)
+        run(apr::GuardSpacing<D, decltype(W1), true>{cells_, box_, apr_.zones(), W1, Rl, dxl, walls_.segments(), walls_.points(),
+                                                     wall_cells(l), x, p_.get(field::Density{}), p_.get(field::Mass{}),
+                                                     p_.get(field::AprBirthLevel{}), p_.get(field::AprMother{}),
+                                                     p_.get(field::ShepardGamma{}), guard_shift_});
+      else
+        run(apr::GuardSpacing<D, decltype(W1), false>{cells_, box_, apr_.zones(), W1, Rl, dxl, walls_.segments(), walls_.points(),
+                                                      wall_cells(0), x, p_.get(field::Density{}), p_.get(field::Mass{}),
+                                                      p_.get(field::AprBirthLevel{}), p_.get(field::AprMother{}),
+                                                      field_view_t<field::ShepardGamma, D>(), guard_shift_});
+    });
+    if (moved > 0)
+      Kokkos::parallel_for("ondine::APR::GuardSpacing::apply", Kokkos::RangePolicy<ExecSpace>(b, e), apr::ApplyShift<D>{box_, x, guard_shift_});
+    total += moved;
+  }
+  apr_.count_guard_shifts(total);
+  apr_.invalidate_weights();
+  return total;
 }
 
 template <int D>
