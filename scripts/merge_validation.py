@@ -39,6 +39,11 @@ def parts(md_path):
     return rows, compare, orders
 
 
+def of(line):
+    """The case a table row, comparison line or order line is about."""
+    return line.lstrip("|- ").split(" ")[0].split("/")[0]
+
+
 def main(argv):
     replace = "--replace" in argv
     argv = [a for a in argv if a != "--replace"]
@@ -47,6 +52,7 @@ def main(argv):
     dest, sources = argv[0], argv[1:]
     merged = {"level": None, "orders": {}, "runs": []}
     rows, compare, orders = [], [], []
+    case_order = []  # cases in the order first met: a replaced case keeps its place
     os.makedirs(dest, exist_ok=True)
     for src in sources:
         path = os.path.join(src, "validation.json")
@@ -59,9 +65,10 @@ def main(argv):
         twice = {r["case"] for r in j["runs"]} & {r["case"] for r in merged["runs"]}
         if twice and not replace:
             sys.exit(f"merge_validation.py: {path}: case(s) {', '.join(sorted(twice))} already in an earlier source")
+        for run in j["runs"]:
+            if run["case"] not in case_order:
+                case_order.append(run["case"])
         if twice:  # drop the earlier sources' entries of these cases
-            def of(line):  # the case a table row, comparison line or order line is about
-                return line.lstrip("|- ").split(" ")[0].split("/")[0]
             merged["runs"] = [r for r in merged["runs"] if r["case"] not in twice]
             merged["orders"] = {k: v for k, v in merged["orders"].items() if k not in twice}
             rows = [x for x in rows if of(x) not in twice]
@@ -79,6 +86,11 @@ def main(argv):
         for case in dict.fromkeys(run["case"] for run in j["runs"]):
             if os.path.isdir(os.path.join(src, case)):
                 shutil.copytree(os.path.join(src, case), os.path.join(dest, case), dirs_exist_ok=True)
+    place = {c: k for k, c in enumerate(case_order)}
+    merged["runs"].sort(key=lambda r: place[r["case"]])  # stable: each case's rungs keep their order
+    rows.sort(key=lambda x: place.get(of(x), len(place)))
+    compare.sort(key=lambda x: place.get(of(x), len(place)))
+    orders.sort(key=lambda x: place.get(of(x), len(place)))
     with open(os.path.join(dest, "validation.json.tmp"), "w") as f:
         json.dump(merged, f, indent=2)
         f.write("\n")
