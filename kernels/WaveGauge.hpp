@@ -4,11 +4,15 @@
 // the free-surface elevation is where S falls through 1/2 (the value of a
 // half-filled support), the highest such level on the line. Only the particles
 // a rank owns count (halos would be counted twice over the ranks).
+// With refinement zones (Levels = true) only the SPH particles count, each with its
+// own level's radius, as for the probes and wall forces (a mother guard and its
+// daughters would count the same water twice); Kernel is then the kernel at R = 1.
 #include "kernels/NeighbourLoops.hpp"
+#include "kernels/apr/RefinementZones.hpp"
 
 namespace ondine {
 
-template <int D, class Kernel>
+template <int D, class Kernel, bool Levels = false>
 struct GaugeShepardSum {
   CellList<D> cells;
   PeriodicBox<D> box;
@@ -20,12 +24,25 @@ struct GaugeShepardSum {
   field_view_t<field::Mass, D> m;
   Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> points;
   Kokkos::View<double*, MemSpace> sum;
+  RefinementZones<D> zones = {};  // Levels only (R2: the coarsest level's)
+  field_view_t<field::AprBirthLevel, D> birth = {};
+  field_view_t<field::AprGuard, D> guard = {};
 
   KOKKOS_INLINE_FUNCTION void operator()(const int s) const {
     const Vec<D> xs = load<D>(points, s);
     double acc = 0.0;
     for_each_point_within<D>(cells, box, x, xs, R2, [&](const int j, const Vec<D>&, const double r) {
-      if (j < owned) acc += m(j) / rho(j) * W.value(r);
+      if (j >= owned) return;
+      if constexpr (Levels) {
+        if (guard(j)) return;
+        const double Rj = zones.R[birth(j)];
+        if (r >= Rj) return;
+        double RD = 1.0;
+        for (int k = 0; k < D; ++k) RD *= Rj;
+        acc += m(j) / rho(j) * W.value(r / Rj) / RD;
+      } else {
+        acc += m(j) / rho(j) * W.value(r);
+      }
     });
     sum(s) = acc;
   }

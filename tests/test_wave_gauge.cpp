@@ -51,6 +51,35 @@ wave_gauges: [{name: low, position: [0.2], bottom: 0.05, top: 0.8}, {name: high,
   CHECK(std::abs(z[1] - 0.6) < 0.05 * dx);
 }
 
+// With a refinement zone around the low column's surface (its daughters on the fine
+// lattice, dx_f = 0.01), the gauge reads the fine SPH particles at the fine radius:
+// within 0.05 dx_f of the block top, as a uniform fine run. Summing mothers (guards
+// inside the zone) and daughters together at the coarse radius, as the gauge did before,
+// reads 0.3105 m: 1.05 dx_f high.
+TEST_CASE("Wave gauges with refinement zones read the SPH particles of each level", "[nfm][apr]") {
+  const double dx_f = 0.01;
+  const Scene s = parse_case(R"(
+dimension: 2
+domain: {min: [-0.05, -0.05], max: [1.05, 1.0]}
+fluid: {rho0: 1000, sound_speed: 25}
+discretisation: {dx: 0.02, R_over_dx: 3}
+walls: [{name: tank, points: [[0, 0], [1, 0], [1, 0.9], [0, 0.9]], closed: true, fluid_side: inside, condition: slip}]
+fluid_blocks: [{min: [0, 0], max: [0.5, 0.3], pressure: hydrostatic}, {min: [0.5, 0], max: [1, 0.6], pressure: hydrostatic}]
+forces: {gravity: [0, -9.81]}
+time: {duration: 1, output_interval: 1}
+wave_gauges: [{name: low, position: [0.2], bottom: 0.05, top: 0.8}, {name: high, position: [0.8], bottom: 0.05, top: 0.8}]
+refinement: {zones: [{name: surface, min: [0.1, 0.2], max: [0.3, 0.4]}]}
+)",
+                             "gauges_apr.yaml");
+  Simulation<2> sim(s);
+  REQUIRE(sim.refinement().refined() > 0);
+  const auto z = sim.wave_elevations();
+  REQUIRE(z.size() == 2);
+  std::printf("wave gauges with a zone: low %.6f m (block top 0.3), high %.6f m (0.6)\n", z[0], z[1]);
+  CHECK(std::abs(z[0] - 0.3) < 0.05 * dx_f);
+  CHECK(std::abs(z[1] - 0.6) < 0.05 * 0.02);
+}
+
 TEST_CASE("A wave gauge outside the domain or without gravity is refused", "[case]") {
   const std::string base = R"(
 dimension: 2

@@ -950,7 +950,7 @@ std::vector<double> Simulation<D>::wave_elevations() {
   if (scene_.wave_gauges.empty()) return out;
   ensure_neighbours();  // the particle cell list is current
   refresh_halos();
-  const double step = 0.25 * scene_.dx;
+  const double step = 0.25 * (apr_on_ ? apr_.dx(apr_.levels() - 1) : scene_.dx);  // a quarter of the finest spacing
   for (const WaveGauge& g : scene_.wave_gauges) {
     const int ns = static_cast<int>(std::floor((g.top - g.bottom) / step)) + 1;
     Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> pts("ondine::WaveGauge::points", ns);
@@ -963,11 +963,20 @@ std::vector<double> Simulation<D>::wave_elevations() {
       hp(s, D - 1) = z[s];
     }
     Kokkos::deep_copy(pts, hp);
-    with_kernel<D>(scene_.kernel, R_, [&](auto W) {
-      Kokkos::parallel_for("ondine::WaveGauge", Kokkos::RangePolicy<ExecSpace>(0, ns),
-                           GaugeShepardSum<D, decltype(W)>{cells_, box_, W, R_ * R_, n_own_, p_.get(field::Position{}),
-                                                           p_.get(field::Density{}), p_.get(field::Mass{}), pts, sum});
-    });
+    if (apr_on_)  // SPH particles only, each with its level's radius (WaveGauge.hpp)
+      with_kernel<D>(scene_.kernel, 1.0, [&](auto W1) {
+        Kokkos::parallel_for("ondine::WaveGauge", Kokkos::RangePolicy<ExecSpace>(0, ns),
+                             GaugeShepardSum<D, decltype(W1), true>{cells_, box_, W1, R_ * R_, n_own_, p_.get(field::Position{}),
+                                                                    p_.get(field::Density{}), p_.get(field::Mass{}), pts, sum,
+                                                                    apr_.zones(), p_.get(field::AprBirthLevel{}),
+                                                                    p_.get(field::AprGuard{})});
+      });
+    else
+      with_kernel<D>(scene_.kernel, R_, [&](auto W) {
+        Kokkos::parallel_for("ondine::WaveGauge", Kokkos::RangePolicy<ExecSpace>(0, ns),
+                             GaugeShepardSum<D, decltype(W)>{cells_, box_, W, R_ * R_, n_own_, p_.get(field::Position{}),
+                                                             p_.get(field::Density{}), p_.get(field::Mass{}), pts, sum});
+      });
     std::vector<double> shepard(ns);
     Kokkos::deep_copy(Kokkos::View<double*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(shepard.data(), ns), sum);
     comm_.sum_in_place(shepard);
