@@ -48,13 +48,9 @@ struct WallTraction {
       const double rho_i = rho(i);
       double Wr, dn_min = min_dn;
       if constexpr (Levels) {
-        if (guard(i)) return;
-        const double Ri = zones.R[birth(i)];
-        if (r >= Ri) return;
-        double RD = 1.0;
-        for (int k = 0; k < D; ++k) RD *= Ri;
-        Wr = W.value(r / Ri) / RD;
-        dn_min = 0.05 * Ri;
+        if (guard(i) || r >= zones.R[birth(i)]) return;
+        Wr = level_kernel<D>(zones, W, birth(i), r);
+        dn_min = 0.05 * zones.R[birth(i)];
       } else {
         Wr = W.value(r);
       }

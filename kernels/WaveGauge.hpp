@@ -34,12 +34,7 @@ struct GaugeShepardSum {
     for_each_point_within<D>(cells, box, x, xs, R2, [&](const int j, const Vec<D>&, const double r) {
       if (j >= owned) return;
       if constexpr (Levels) {
-        if (guard(j)) return;
-        const double Rj = zones.R[birth(j)];
-        if (r >= Rj) return;
-        double RD = 1.0;
-        for (int k = 0; k < D; ++k) RD *= Rj;
-        acc += m(j) / rho(j) * W.value(r / Rj) / RD;
+        if (!guard(j)) acc += m(j) / rho(j) * level_kernel<D>(zones, W, birth(j), r);
       } else {
         acc += m(j) / rho(j) * W.value(r);
       }

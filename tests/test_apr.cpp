@@ -32,6 +32,17 @@ Scene uniform_flow_scene(double speed, bool zone, const std::string& extra_schem
   return parse_case(y, "apr_test.yaml");
 }
 
+// A periodic 0.4 m box (dx 0.02 m) holding one Taylor-Green cell, with the given scheme.
+std::string taylor_green_box(const std::string& scheme) {
+  return "dimension: 2\n"
+         "domain: {min: [0, 0], max: [0.4, 0.4], periodic: [true, true]}\n"
+         "fluid: {rho0: 1000, sound_speed: 10}\n"
+         "discretisation: {dx: 0.02, R_over_dx: 3}\n"
+         "fluid_blocks: [{min: [0, 0], max: [0.4, 0.4], velocity: {taylor_green: {amplitude: 1.0, wavelength: 0.4}}}]\n"
+         "scheme: " + scheme + "\n"
+         "time: {duration: 1, output_interval: 1}\n";
+}
+
 struct HostState {
   Kokkos::View<double* [2], Kokkos::LayoutLeft, Kokkos::HostSpace> x, u;
   Kokkos::View<double*, Kokkos::HostSpace> rho, P, m;
@@ -56,14 +67,7 @@ HostState host_state(const Simulation<2>& sim) {
 
 TEST_CASE("APR refinement conserves mass exactly and momentum to round-off (prolongation 5.22)", "[apr]") {
   // a Taylor-Green velocity field, so that the prolongation gradient is not zero
-  const std::string y =
-      "dimension: 2\n"
-      "domain: {min: [0, 0], max: [0.4, 0.4], periodic: [true, true]}\n"
-      "fluid: {rho0: 1000, sound_speed: 10}\n"
-      "discretisation: {dx: 0.02, R_over_dx: 3}\n"
-      "fluid_blocks: [{min: [0, 0], max: [0.4, 0.4], velocity: {taylor_green: {amplitude: 1.0, wavelength: 0.4}}}]\n"
-      "scheme: {time_integrator: rk4}\n"
-      "time: {duration: 1, output_interval: 1}\n";
+  const std::string y = taylor_green_box("{time_integrator: rk4}");
   const Scene coarse = parse_case(y, "tg.yaml");
   const Scene refined = parse_case(y + "refinement: {zones: [{name: box, min: [0.1, 0.1], max: [0.22, 0.3]}]}\n", "tg.yaml");
   Simulation<2> a(coarse), b(refined);
@@ -516,14 +520,7 @@ TEST_CASE("APR: a zone moving through fluid at rest refines ahead of it and dere
 }
 
 TEST_CASE("APR: a zone following the speed is re-centred on the fastest SPH particle of its search region", "[apr]") {
-  std::string y =
-      "dimension: 2\n"
-      "domain: {min: [0, 0], max: [0.4, 0.4], periodic: [true, true]}\n"
-      "fluid: {rho0: 1000, sound_speed: 10}\n"
-      "discretisation: {dx: 0.02, R_over_dx: 3}\n"
-      "fluid_blocks: [{min: [0, 0], max: [0.4, 0.4], velocity: {taylor_green: {amplitude: 1.0, wavelength: 0.4}}}]\n"
-      "scheme: {time_integrator: rk4}\n"
-      "time: {duration: 1, output_interval: 1}\n"
+  std::string y = taylor_green_box("{time_integrator: rk4}") +
       "refinement: {zones: [{name: box, min: [0.15, 0.15], max: [0.25, 0.25], follow: speed, search_min: [0.0, 0.05],"
       " search_max: [0.4, 0.15], every: 1}]}\n";
   Simulation<2> sim(parse_case(y, "follow.yaml"));
@@ -539,14 +536,7 @@ TEST_CASE("APR: a zone following the speed is re-centred on the fastest SPH part
 TEST_CASE("APR: an output (prepare_output, then finish_output) does not change the run", "[apr]") {
   // a Taylor-Green field (the guards' interpolated values differ from the ones they carry)
   // and a zone moving through it (refinement and derefinement at the bookkeepings)
-  const std::string y =
-      "dimension: 2\n"
-      "domain: {min: [0, 0], max: [0.4, 0.4], periodic: [true, true]}\n"
-      "fluid: {rho0: 1000, sound_speed: 10}\n"
-      "discretisation: {dx: 0.02, R_over_dx: 3}\n"
-      "fluid_blocks: [{min: [0, 0], max: [0.4, 0.4], velocity: {taylor_green: {amplitude: 1.0, wavelength: 0.4}}}]\n"
-      "scheme: {time_integrator: rk4, delta_sph: 0.1}\n"
-      "time: {duration: 1, output_interval: 1}\n"
+  const std::string y = taylor_green_box("{time_integrator: rk4, delta_sph: 0.1}") +
       "refinement: {zones: [{name: box, min: [0.1, 0.12], max: [0.2, 0.28], velocity: [1.0, 0]}]}\n";
   Simulation<2> quiet(parse_case(y, "no_output.yaml")), watched(parse_case(y, "outputs.yaml"));
   for (int s = 0; s < 60; ++s) {

@@ -28,9 +28,8 @@ TEST_CASE("The gauge level is where the sampled Shepard sum falls through 1/2", 
   CHECK(gauge_level(z, s, 7) == Approx(1.5).epsilon(1e-14));
 }
 
-TEST_CASE("Wave gauges read the still-water levels of two columns", "[nfm]") {
-  const double dx = 0.02;
-  const Scene s = parse_case(R"(
+// A tank with two still columns, 0.3 m and 0.6 m deep, a gauge over each.
+const char* const two_columns = R"(
 dimension: 2
 domain: {min: [-0.05, -0.05], max: [1.05, 1.0]}
 fluid: {rho0: 1000, sound_speed: 25}
@@ -40,8 +39,11 @@ fluid_blocks: [{min: [0, 0], max: [0.5, 0.3], pressure: hydrostatic}, {min: [0.5
 forces: {gravity: [0, -9.81]}
 time: {duration: 1, output_interval: 1}
 wave_gauges: [{name: low, position: [0.2], bottom: 0.05, top: 0.8}, {name: high, position: [0.8], bottom: 0.05, top: 0.8}]
-)",
-                             "gauges.yaml");
+)";
+
+TEST_CASE("Wave gauges read the still-water levels of two columns", "[nfm]") {
+  const double dx = 0.02;
+  const Scene s = parse_case(two_columns, "gauges.yaml");
   Simulation<2> sim(s);
   const auto z = sim.wave_elevations();
   REQUIRE(z.size() == 2);
@@ -58,18 +60,7 @@ wave_gauges: [{name: low, position: [0.2], bottom: 0.05, top: 0.8}, {name: high,
 // reads 0.3105 m: 1.05 dx_f high.
 TEST_CASE("Wave gauges with refinement zones read the SPH particles of each level", "[nfm][apr]") {
   const double dx_f = 0.01;
-  const Scene s = parse_case(R"(
-dimension: 2
-domain: {min: [-0.05, -0.05], max: [1.05, 1.0]}
-fluid: {rho0: 1000, sound_speed: 25}
-discretisation: {dx: 0.02, R_over_dx: 3}
-walls: [{name: tank, points: [[0, 0], [1, 0], [1, 0.9], [0, 0.9]], closed: true, fluid_side: inside, condition: slip}]
-fluid_blocks: [{min: [0, 0], max: [0.5, 0.3], pressure: hydrostatic}, {min: [0.5, 0], max: [1, 0.6], pressure: hydrostatic}]
-forces: {gravity: [0, -9.81]}
-time: {duration: 1, output_interval: 1}
-wave_gauges: [{name: low, position: [0.2], bottom: 0.05, top: 0.8}, {name: high, position: [0.8], bottom: 0.05, top: 0.8}]
-refinement: {zones: [{name: surface, min: [0.1, 0.2], max: [0.3, 0.4]}]}
-)",
+  const Scene s = parse_case(std::string(two_columns) + "refinement: {zones: [{name: surface, min: [0.1, 0.2], max: [0.3, 0.4]}]}\n",
                              "gauges_apr.yaml");
   Simulation<2> sim(s);
   REQUIRE(sim.refinement().refined() > 0);

@@ -28,13 +28,10 @@ struct ProbeSum {
   int what;
   KOKKOS_INLINE_FUNCTION void operator()(const int j, double& acc) const {
     if (guard(j)) return;
-    const double R = zones.R[birth(j)];
     const double r = kmath::sqrt(norm2(zones.box.delta(xp, load<D>(x, j))));
-    if (r >= R) return;
-    double RD = 1.0;
-    for (int k = 0; k < D; ++k) RD *= R;
+    if (r >= zones.R[birth(j)]) return;
     const double q = what == 0 ? 1.0 : what == 1 ? P(j) : what == 2 ? rho(j) : u(j, what - 3);
-    acc += m(j) / rho(j) * q * W1.value(r / R) / RD;
+    acc += m(j) / rho(j) * q * level_kernel<D>(zones, W1, birth(j), r);
   }
 };
 

@@ -92,4 +92,16 @@ struct RefinementZones {
   }
 };
 
+// W(r, R_l) = W1(r / R_l) / R_l^D of a particle of level l, from the scene's kernel at
+// radius 1 (the per-level Shepard sums of the probes, wall forces and wave gauges); 0 at
+// r >= R_l.
+template <int D, class UnitKernel>
+KOKKOS_INLINE_FUNCTION double level_kernel(const RefinementZones<D>& zones, const UnitKernel& W1, const int level, const double r) {
+  const double R = zones.R[level];
+  if (r >= R) return 0.0;
+  double RD = 1.0;
+  for (int k = 0; k < D; ++k) RD *= R;
+  return W1.value(r / R) / RD;
+}
+
 }  // namespace ondine
