@@ -6,8 +6,10 @@
 //   drho_i += -rho_i s_q ((u_q - u_i) . n_out) W_iq                      (4.25)
 //   du_i   += 2 nu s_q (u_i - u_q) / d_n W_iq,  d_n = (x_i - x_q).n_out   (4.85, no-slip walls, viscous scenes)
 // (plus 2 P_min inside the bracket with the background-pressure correction 2.105),
-// with the wall pressure P_p of the normal flux (4.14) and its MUSCL state of rho
-// (4.30)-(4.32, kernels/WallPressure.hpp).
+// with the wall pressure P_p of the normal flux (4.14) and its MUSCL state of rho and u
+// (4.30)-(4.32, kernels/WallPressure.hpp, kernels/WallVelocityState.hpp): the velocity
+// gradient is gathered, for the particles that have a wall point within R only, by one
+// more loop over the neighbour list.
 // With Morris viscosity and no-slip walls (Consistent), the wall term carries the
 // weight s_i(x_iq) of the Laplacian exact for linear and quadratic fields
 // (kernels/ConsistentLaplacian.hpp), as the fluid pairs do.
@@ -30,6 +32,7 @@
 #include "kernels/NeighbourLoops.hpp"
 #include "kernels/WallPressure.hpp"
 #include "kernels/WallSet.hpp"
+#include "kernels/WallVelocityState.hpp"
 
 namespace ondine {
 
@@ -55,7 +58,7 @@ struct WallFluxPass {
   field_view_t<field::Acceleration, D> du;
   field_view_t<field::DensityRate, D> drho;
   LaplacianWeightView<D> weights;  // (A_i, b_i) of the consistent Laplacian (DensityGradientPass)
-  NeighbourList<D> list;           // the flux pass's list (the wall-ward correction's sum_P)
+  NeighbourList<D> list;           // the flux pass's list (grad u of the MUSCL state; the wall-ward correction's sum_P)
   field_view_t<field::Mass, D> m;
   double clearance;                // dx / 2 of the level: the wall-ward correction acts closer than this
 
@@ -68,8 +71,19 @@ struct WallFluxPass {
     return S;
   }
 
+  // <grad u>_i of the velocity's MUSCL state (4.30)
+  KOKKOS_INLINE_FUNCTION Mat<D> velocity_gradient(const int i, const Vec<D>& xi, const Vec<D>& ui) const {
+    VelocityGradientSum<D> S;
+    for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>& xij, const double r) {
+      S.add(m(j) / rho(j), xij, (W.derivative(r) / r) * xij, load<D>(u, j) - ui);
+    });
+    return S.gradient();
+  }
+
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<D> xi = load<D>(x, i), ui = load<D>(u, i);
+    Mat<D> grad_u;
+    bool have_grad_u = false;
     const double rho_i = rho(i), P_i = P(i);
     const double c2 = eos.c2(rho_i);
     const double c_i = kmath::sqrt(c2);
@@ -82,7 +96,12 @@ struct WallFluxPass {
       G += Wq * n;
       if (r < r_min) r_min = r;
       const Vec<D> uq = load<D>(wall.u, q);
-      const double P_p = normal_flux_pressure<D>(rho_i, P_i, c2, c_i, g_rho, xiq, ui, uq, n);
+      if (!have_grad_u) {
+        grad_u = velocity_gradient(i, xi, ui);
+        have_grad_u = true;
+      }
+      const double un = wall_normal_velocity<D>(grad_u, xiq, ui, uq, n);
+      const double P_p = normal_flux_pressure<D>(rho_i, P_i, c2, c_i, g_rho, xiq, un);
       // (2.105) shifts P_i + P_j by 2 P_min in the fluid sum; its wall counterpart keeps
       // the shift from pushing particles into the wall (sum_P w grad W + sum_S s W n = 0)
       acc += (-(P_p + P_i + 2.0 * P_min) * Wq / rho_i) * n;

@@ -17,14 +17,13 @@ struct WallEos {
 // fluid state reconstructed at the wall point by MUSCL (4.30) from the renormalised
 // density gradient and limited by (4.31)-(4.32): rho_f within 1 % of rho_i, the normal
 // relative velocity within 0.1 c_i; P_f = P_i + c_i^2 (rho_f - rho_i) (first order in
-// rho_f - rho_i <= 1 %, exact for the linear law). xiq = x_i - x_q.
+// rho_f - rho_i <= 1 %, exact for the linear law). xiq = x_i - x_q; un = (u_f - u_q).n_out,
+// the velocity's MUSCL state (kernels/WallVelocityState.hpp).
 template <int D>
 KOKKOS_INLINE_FUNCTION double normal_flux_pressure(double rho_i, double P_i, double c2, double c_i, const Vec<D>& grad_rho,
-                                                   const Vec<D>& xiq, const Vec<D>& ui, const Vec<D>& uq,
-                                                   const Vec<D>& n_out) {
+                                                   const Vec<D>& xiq, double un) {
   double rho_f = rho_i - dot(grad_rho, xiq);
   rho_f = kmath::fmax(0.99 * rho_i, kmath::fmin(rho_f, 1.01 * rho_i));
-  double un = dot(ui - uq, n_out);
   un = kmath::fmax(-0.1 * c_i, kmath::fmin(un, 0.1 * c_i));
   return P_i + c2 * (rho_f - rho_i) + rho_f * c_i * un;
 }
