@@ -74,10 +74,11 @@ struct WallFluxPass {
   // <grad u>_i of the velocity's MUSCL state (4.30)
   KOKKOS_INLINE_FUNCTION Mat<D> velocity_gradient(const int i, const Vec<D>& xi, const Vec<D>& ui) const {
     VelocityGradientSum<D> S;
+    S.shepard = m(i) / rho(i) * W.value(0.0);
     for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>& xij, const double r) {
-      S.add(m(j) / rho(j), xij, (W.derivative(r) / r) * xij, load<D>(u, j) - ui);
+      S.add(m(j) / rho(j), xij, (W.derivative(r) / r) * xij, load<D>(u, j) - ui, W.value(r));
     });
-    return S.gradient();
+    return S.gradient(gamma(i));
   }
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {

@@ -37,6 +37,7 @@ struct WallTraction {
   field_view_t<field::Mass, D> m;
   field_view_t<field::DensityGradient, D> grad_rho;
   Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace> traction;  // (q, 2D): pressure force, viscous force
+  field_view_t<field::ShepardGamma, D> gamma;                       // gamma_i (the velocity state's free-surface test)
   // Levels only: Kernel is the scene's kernel at R = 1, R2 the coarsest level's R^2
   RefinementZones<D> zones = {};
   field_view_t<field::AprBirthLevel, D> birth = {};
@@ -50,6 +51,9 @@ struct WallTraction {
     if constexpr (Levels) {
       R_i = zones.R[birth(i)];
       R2_i = R_i * R_i;
+      S.shepard = m(i) / rho(i) * level_kernel<D>(zones, W, birth(i), 0.0);
+    } else {
+      S.shepard = m(i) / rho(i) * W.value(0.0);
     }
     for_each_point_within<D>(cells, box, x, xi, R2_i, [&](const int j, const Vec<D>& xij, const double r) {
       if (j == i || r <= 0.0) return;
@@ -58,9 +62,12 @@ struct WallTraction {
       }
       // Levels: W is the kernel at R = 1; the scale of grad W cancels in the renormalisation
       const double dW = W.derivative(r / R_i);
-      S.add(m(j) / rho(j), xij, (dW / r) * xij, load<D>(u, j) - ui);
+      double Wr;
+      if constexpr (Levels) Wr = level_kernel<D>(zones, W, birth(i), r);
+      else Wr = W.value(r);
+      S.add(m(j) / rho(j), xij, (dW / r) * xij, load<D>(u, j) - ui, Wr);
     });
-    return S.gradient();
+    return S.gradient(gamma(i));
   }
 
   KOKKOS_INLINE_FUNCTION void operator()(const int q) const {

@@ -1001,7 +1001,8 @@ std::vector<WallForce> Simulation<D>::wall_forces() {
                                                                wall_eos(), 0.05 * R_, box_, p_.get(field::Position{}),
                                                                p_.get(field::Velocity{}), p_.get(field::Density{}),
                                                                p_.get(field::Pressure{}), p_.get(field::Mass{}),
-                                                               p_.get(field::DensityGradient{}), traction, apr_.zones(),
+                                                               p_.get(field::DensityGradient{}), traction,
+                                                               p_.get(field::ShepardGamma{}), apr_.zones(),
                                                                p_.get(field::AprBirthLevel{}), p_.get(field::AprGuard{})});
     });
   else
@@ -1011,7 +1012,8 @@ std::vector<WallForce> Simulation<D>::wall_forces() {
                                                         wall_eos(), 0.05 * R_, box_, p_.get(field::Position{}),
                                                         p_.get(field::Velocity{}), p_.get(field::Density{}),
                                                         p_.get(field::Pressure{}), p_.get(field::Mass{}),
-                                                        p_.get(field::DensityGradient{}), traction});
+                                                        p_.get(field::DensityGradient{}), traction,
+                                                        p_.get(field::ShepardGamma{})});
     });
   // several ranks: each wall point is counted by the rank that owns its cell (its
   // support is complete there: owned particles and halos)
