@@ -36,6 +36,34 @@
 // An exactly uniform lattice flow is disturbed by the shift of the guards (at 2.6e-2 of
 // the dynamic pressure in test_apr.cpp's uniform flow, against 1e-13 without), which is
 // why it is an option.
+//
+// Mother guards (session 7, refinement.mother_shifting). A mother guard inside Z_{r+1} is carried
+// with its interpolated velocity (5.24) and nothing keeps its level ordered either; it
+// becomes a coarse SPH particle again when it leaves the zone. In the dam break's run-up
+// along the impact wall (t > 0.25 s) the mothers collected on the line dx_r / 2 from the
+// wall (where GuardApply::no_penetration removes their wall-ward velocity, while the
+// fine flow interpolated there still moves towards the wall): 55 to 64 % of the level-r
+// particles within 2 dx_r of the wall had a level-r neighbour closer than dx_r / 2
+// (coarse uniform run: 18 %), some coincident to 0.01 dx_r, in a layer
+// 0.5 to 1.3 dx_r wide where the fine jet is 2 dx_r wide. Leaving the zone's top they
+// made a coarse jet of clumped particles (kernel sum up to 2.1 gamma), whose pressure
+// noise was 4x the coarse run's (docs/apr.md, session 7; the other cause there, roles
+// that lagged behind the flow, is fixed in rebuild_neighbours). The thesis shifts the
+// mothers in the zone too ((5.14)-(5.16), Figs 5.9-5.10, run 2). Here a mother guard
+// moves by the same law, but against the
+// concentration of its daughters' level as reference:
+//   grad C_i = sum_{j in r} w_j (1 + 0.2 (W_ij / W(dx_r))^4) grad_i W_ij
+//            - sum_{j in r+1} w_j grad_i W_ij,            kernel at R_r,
+// i.e. the mothers are moved towards the fluid volume the fine particles fill. The fine
+// level fills a mother guard's whole support (its guards cover a layer >= R_r around
+// Z_{r+1}), so a free surface or a wall cuts both sums alike and their difference needs
+// neither the wall term nor the full-support test: the mothers are not pushed into the
+// void. Not closer than dx_r / 4 to a wall (the coarse uniform run's particles stay
+// >= 0.38 dx_r from the impact wall). A mother guard's fields are interpolated (5.23-5.24),
+// so again no mass, momentum or density changes. Measured: clumps removed (level-0 pairs
+// closer than dx_r / 2 next to the wall 57 % -> 0); at a still free surface the top row of
+// mother guards settles 0.2 dx_r higher (where the coarse and fine sums balance); the
+// uniform lattice flow of test_apr.cpp is disturbed at 1.3e-4 of q (1e-12 without).
 #include "kernels/CellList.hpp"
 #include "kernels/NeighbourLoops.hpp"
 #include "kernels/WallSet.hpp"
@@ -65,6 +93,8 @@ struct GuardSpacing {
   field_view_t<field::AprMother, D> mother;    // mother guards are not moved
   field_view_t<field::ShepardGamma, D> gamma;  // of the guards (ShepardGammaPass at R_r), read with Walls only
   Kokkos::View<double* [D], Kokkos::LayoutRight, MemSpace> shift;
+  bool daughters = true;  // shift the range's daughter guards (refinement.guard_shifting)
+  bool mothers = false;   // shift the range's mother guards (refinement.mother_shifting, see above)
 
   KOKKOS_INLINE_FUNCTION double value(const double r) const {
     double v = W1.value(r / R);
@@ -80,10 +110,13 @@ struct GuardSpacing {
   KOKKOS_INLINE_FUNCTION void operator()(const int i, long& moved) const {
     for (int a = 0; a < D; ++a) shift(i, a) = 0.0;
     const int r = birth(i);
-    if (mother(i) != 0 || r == 0) return;
     const Vec<D> xi = load<D>(x, i);
-    // the level's whole support in E_r (its particles reach the layer's outer edge, give or take the mothers' spacing)
-    if (zones.distance_to_level(xi, r) > zones.layer[r] - R - 0.5 * zones.dx[r - 1]) return;
+    const bool as_mother = mother(i) != 0;  // a mother guard (its daughters are the next level)
+    if (as_mother ? !mothers : (r == 0 || !daughters)) return;
+    if (!as_mother) {
+      // the level's whole support in E_r (its particles reach the layer's outer edge, give or take the mothers' spacing)
+      if (zones.distance_to_level(xi, r) > zones.layer[r] - R - 0.5 * zones.dx[r - 1]) return;
+    }
     const double R2 = R * R, W_dx = value(dx);
     Vec<D> gradC = Vec<D>::zero();
     double sum = m(i) / rho(i) * value(0.0);
@@ -94,34 +127,43 @@ struct GuardSpacing {
     for_each_adjacent_cell<D>(cells.grid, home, [&](const int c) {
       for (int k = start(c); k < start(c + 1); ++k) {
         const int j = perm(k);
-        if (j == i || birth(j) != r) continue;
+        if (j == i) continue;
+        const bool fine = as_mother && birth(j) == r + 1;  // a mother's reference: its daughters' level
+        if (birth(j) != r && !fine) continue;
         const Vec<D> xij = box.delta(xi, load<D>(x, j));
         const double r2 = norm2(xij);
         if (r2 >= R2 || r2 <= 0.0) continue;
         const double rr = kmath::sqrt(r2), w = m(j) / rho(j), Wij = value(rr);
+        if (fine) {
+          gradC -= (w * derivative(rr) / rr) * xij;
+          continue;
+        }
         const double ratio = Wij / W_dx;
         gradC += (w * (1.0 + 0.2 * ratio * ratio * ratio * ratio) * derivative(rr) / rr) * xij;  // (2.110)-(2.111)
         sum += w * Wij;
       }
     });
-    double g = 1.0;
-    if constexpr (Walls) {
-      for_each_point_within<D>(wall_cells, box, wall.x, xi, R2, [&](const int q, const Vec<D>&, const double rq) {
-        gradC += (wall.s(q) * value(rq)) * load<D>(wall.n_out, q);  // (4.89)
-      });
-      g = gamma(i);
+    if (!as_mother) {
+      double g = 1.0;
+      if constexpr (Walls) {
+        for_each_point_within<D>(wall_cells, box, wall.x, xi, R2, [&](const int q, const Vec<D>&, const double rq) {
+          gradC += (wall.s(q) * value(rq)) * load<D>(wall.n_out, q);  // (4.89)
+        });
+        g = gamma(i);
+      }
+      if (sum < (1.0 - nu_max) * g) return;  // a support cut by a free surface or the layer's edge
     }
-    if (sum < (1.0 - nu_max) * g) return;  // a support cut by a free surface or the layer's edge
     Vec<D> s = (-coef * R2) * gradC;
     const double len2 = norm2(s), cap = max_step * dx;
     if (len2 > cap * cap) s *= cap / kmath::sqrt(len2);
-    // not closer than dx_r / 8 to a wall (each segment whose span holds the guard)
+    // not closer than dx_r / 8 (mothers: dx_r / 4) to a wall (each segment whose span holds the guard)
+    const double clearance = (as_mother ? 0.25 : 0.125) * dx;
     for (int k = 0; k < seg.count; ++k) {
       const Vec<D> a = load<D>(seg.a, k), ab = load<D>(seg.b, k) - a, n = load<D>(seg.n_in, k);
       const double t = dot(xi - a, ab) / norm2(ab);
       if (t < 0.0 || t > 1.0) continue;
       const double sn = dot(s, n);
-      if (sn < 0.0 && dot(xi - a, n) + sn < 0.125 * dx) s -= sn * n;
+      if (sn < 0.0 && dot(xi - a, n) + sn < clearance) s -= sn * n;
     }
     if (norm2(s) > 0.0) ++moved;
     for (int a = 0; a < D; ++a) shift(i, a) = s[a];

@@ -653,8 +653,9 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
 
   // adaptive particle refinement (thesis 5.4, docs/apr.md): nested boxes, one level per depth
   if (const YAML::Node ref = root["refinement"]) {
-    r.only_keys(ref, "refinement", {"zones", "transition", "guard_shifting"});
+    r.only_keys(ref, "refinement", {"zones", "transition", "guard_shifting", "mother_shifting"});
     if (ref["guard_shifting"]) s.refinement_guard_shifting = r.boolean(ref["guard_shifting"], "refinement.guard_shifting");
+    if (ref["mother_shifting"]) s.refinement_mother_shifting = r.boolean(ref["mother_shifting"], "refinement.mother_shifting");
     if (ref["transition"]) {
       s.refinement_transition = r.positive(ref["transition"], "refinement.transition", " (in R of the coarser level)");
       if (s.refinement_transition < 0.5 || s.refinement_transition > 4.0)

@@ -145,6 +145,7 @@ struct Scene {
   // adaptive particle refinement: empty = the uniform code path (no APR field, kernel or pass)
   std::vector<RefinementZone> refinement_zones;
   bool refinement_guard_shifting = false;  // shift the daughter guards towards a regular arrangement (kernels/apr/GuardSpacing.hpp)
+  bool refinement_mother_shifting = false;  // shift the mother guards towards their daughters' volume (kernels/apr/GuardSpacing.hpp)
   double refinement_transition = 1.0;  // width of the daughter-guard layer, in R of the coarser level (thesis: R_m)
   int max_refinement_level() const {
     int l = 0;

@@ -393,7 +393,12 @@ void Simulation<D>::ensure_neighbours() {
 template <int D>
 void Simulation<D>::rebuild_neighbours(bool may_rebalance) {
   if (apr_on_) {
-    rebuild_level_lists(false, may_rebalance);  // in the middle of a step: roles are kept
+    rebuild_level_lists(false, may_rebalance);  // in the middle of a step: roles are kept ...
+    // ... and updated at the next step start. Without this, the step start measured the Verlet
+    // displacement from this build and skipped the bookkeeping: in a fast flow the lists were
+    // rebuilt at the stages, and the roles (and the passive guards' velocities) lagged for
+    // tens of steps (dam break run-up: mother guards 2 dx_m above their zone; docs/apr.md, session 7)
+    bookkeeping_due_ = true;
     return;
   }
   if (!comm_.serial()) {

@@ -170,32 +170,37 @@ void Simulation<D>::refinement_step_start() {
   }
   if (rebuild) refinement_bookkeeping();
   // with refinement.guard_shifting: the daughter guards shifted towards a regular
-  // arrangement (kernels/apr/GuardSpacing.hpp), from fresh halo positions; the halos
-  // then carry the new positions
-  if (!scene_.refinement_guard_shifting) return;
+  // arrangement, with refinement.mother_shifting the mother guards towards their
+  // daughters' volume (kernels/apr/GuardSpacing.hpp), from fresh halo positions; the
+  // halos then carry the new positions
+  if (!scene_.refinement_guard_shifting && !scene_.refinement_mother_shifting) return;
   refresh_halos();
   if (space_guards() > 0 || !comm_.serial()) halos_fresh_ = false;
 }
 
-// The daughter guards of each level l >= 1 shifted (kernels/apr/GuardSpacing.hpp) from
-// the positions of the owned particles and the halos (cells_ of the last list build,
-// fresh positions); returns the number of guards moved on this rank. The shape
-// functions of the guard interpolation are recomputed at the next stage.
+// The daughter guards of each level l >= 1 (refinement.guard_shifting) and the mother
+// guards of each level l < levels - 1 (refinement.mother_shifting) shifted
+// (kernels/apr/GuardSpacing.hpp) from the positions of the owned particles and the halos
+// (cells_ of the last list build, fresh positions); returns the number of guards moved
+// on this rank. The shape functions of the guard interpolation are recomputed at the
+// next stage. Each level's shifts are computed, then applied: a level's daughter guards
+// read that level only, its mother guards that level and the next, which is shifted after.
 template <int D>
 long Simulation<D>::space_guards() {
   long total = 0;
-  if (apr_.levels() < 2 || !scene_.refinement_guard_shifting) return 0;
+  const bool daughters = scene_.refinement_guard_shifting, mothers = scene_.refinement_mother_shifting;
+  if (apr_.levels() < 2 || !(daughters || mothers)) return 0;
   const int n_all = static_cast<int>(p_.size());
   if (static_cast<int>(guard_shift_.extent(0)) < n_all)
     guard_shift_ = Kokkos::View<double* [D], Kokkos::LayoutRight, MemSpace>("ondine::APR::guard_shift", n_all + n_all / 8);
   const bool walls = !walls_.empty();
   if (walls && level_wall_cells_.empty()) build_level_wall_cells();
   const auto x = p_.get(field::Position{});
-  for (int l = 1; l < apr_.levels(); ++l) {
+  for (int l = mothers ? 0 : 1; l < apr_.levels(); ++l) {
     const int b = apr_.active_end(l), e = apr_.end(l);
     if (e == b) continue;
     const double Rl = apr_.R(l), dxl = apr_.dx(l);
-    if (walls)
+    if (walls && daughters && l > 0)
       Kokkos::parallel_for("ondine::NFM::ShepardGamma", Kokkos::RangePolicy<ExecSpace>(b, e),
                            ShepardGammaPass<D>{walls_.segments(), Rl, box_, x, p_.get(field::ShepardGamma{})});
     long moved = 0;
@@ -205,12 +210,12 @@ long Simulation<D>::space_guards() {
         run(apr::GuardSpacing<D, decltype(W1), true>{cells_, box_, apr_.zones(), W1, Rl, dxl, walls_.segments(), walls_.points(),
                                                      wall_cells(l), x, p_.get(field::Density{}), p_.get(field::Mass{}),
                                                      p_.get(field::AprBirthLevel{}), p_.get(field::AprMother{}),
-                                                     p_.get(field::ShepardGamma{}), guard_shift_});
+                                                     p_.get(field::ShepardGamma{}), guard_shift_, daughters, mothers});
       else
         run(apr::GuardSpacing<D, decltype(W1), false>{cells_, box_, apr_.zones(), W1, Rl, dxl, walls_.segments(), walls_.points(),
                                                       wall_cells(0), x, p_.get(field::Density{}), p_.get(field::Mass{}),
                                                       p_.get(field::AprBirthLevel{}), p_.get(field::AprMother{}),
-                                                      field_view_t<field::ShepardGamma, D>(), guard_shift_});
+                                                      field_view_t<field::ShepardGamma, D>(), guard_shift_, daughters, mothers});
     });
     if (moved > 0)
       Kokkos::parallel_for("ondine::APR::GuardSpacing::apply", Kokkos::RangePolicy<ExecSpace>(b, e), apr::ApplyShift<D>{box_, x, guard_shift_});
