@@ -6,10 +6,10 @@
 //   drho_i += -rho_i s_q ((u_q - u_i) . n_out) W_iq                      (4.25)
 //   du_i   += 2 nu s_q (u_i - u_q) / d_n W_iq,  d_n = (x_i - x_q).n_out   (4.85, no-slip walls, viscous scenes)
 // (plus 2 P_min inside the bracket with the background-pressure correction 2.105),
-// with the wall pressure P_p of the normal flux (4.14) and its MUSCL state of rho and u
-// (4.30)-(4.32, kernels/WallPressure.hpp, kernels/WallVelocityState.hpp): the velocity
-// gradient is gathered, for the particles that have a wall point within R only, by one
-// more loop over the neighbour list.
+// with the wall pressure P_p of the normal flux (4.14) and its MUSCL state of rho
+// (4.30)-(4.32, kernels/WallPressure.hpp); with scheme.wall_velocity_reconstruction also of u
+// (kernels/WallVelocityState.hpp): the velocity gradient is gathered, for the particles
+// that have a wall point within R only, by one more loop over the neighbour list.
 // With Morris viscosity and no-slip walls (Consistent), the wall term carries the
 // weight s_i(x_iq) of the Laplacian exact for linear and quadratic fields
 // (kernels/ConsistentLaplacian.hpp), as the fluid pairs do.
@@ -61,6 +61,7 @@ struct WallFluxPass {
   NeighbourList<D> list;           // the flux pass's list (grad u of the MUSCL state; the wall-ward correction's sum_P)
   field_view_t<field::Mass, D> m;
   double clearance;                // dx / 2 of the level: the wall-ward correction acts closer than this
+  bool velocity_muscl = false;     // scheme.wall_velocity_reconstruction: the MUSCL state of u (4.30)
 
   // E_i's fluid part sum_P w_j grad_i W_ij (only for particles next to a wall).
   KOKKOS_INLINE_FUNCTION Vec<D> fluid_gradient_sum(const int i, const Vec<D>& xi) const {
@@ -74,11 +75,10 @@ struct WallFluxPass {
   // <grad u>_i of the velocity's MUSCL state (4.30)
   KOKKOS_INLINE_FUNCTION Mat<D> velocity_gradient(const int i, const Vec<D>& xi, const Vec<D>& ui) const {
     VelocityGradientSum<D> S;
-    S.shepard = m(i) / rho(i) * W.value(0.0);
     for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>& xij, const double r) {
-      S.add(m(j) / rho(j), xij, (W.derivative(r) / r) * xij, load<D>(u, j) - ui, W.value(r));
+      S.add(m(j) / rho(j), xij, (W.derivative(r) / r) * xij, load<D>(u, j) - ui);
     });
-    return S.gradient(gamma(i));
+    return S.gradient();
   }
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
@@ -97,11 +97,14 @@ struct WallFluxPass {
       G += Wq * n;
       if (r < r_min) r_min = r;
       const Vec<D> uq = load<D>(wall.u, q);
-      if (!have_grad_u) {
-        grad_u = velocity_gradient(i, xi, ui);
-        have_grad_u = true;
+      double un = dot(ui - uq, n);
+      if (velocity_muscl) {
+        if (!have_grad_u) {
+          grad_u = velocity_gradient(i, xi, ui);
+          have_grad_u = true;
+        }
+        un = wall_normal_velocity<D>(grad_u, xiq, ui, uq, n);
       }
-      const double un = wall_normal_velocity<D>(grad_u, xiq, ui, uq, n);
       const double P_p = normal_flux_pressure<D>(rho_i, P_i, c2, c_i, g_rho, xiq, un);
       // (2.105) shifts P_i + P_j by 2 P_min in the fluid sum; its wall counterpart keeps
       // the shift from pushing particles into the wall (sum_P w grad W + sum_S s W n = 0)

@@ -1,8 +1,8 @@
 #pragma once
 // Force of the fluid on the walls: the wall pressure of the normal flux (4.14),
-// with the MUSCL state and limiters of (4.30)-(4.32) (the velocity's as in the wall
-// flux, kernels/WallVelocityState.hpp, its gradient gathered from the particle cell
-// list, same level only with refinement zones), and the viscous traction of
+// with the MUSCL state and limiters of (4.30)-(4.32) (with scheme.wall_velocity_reconstruction
+// the velocity's as in the wall flux, kernels/WallVelocityState.hpp, its gradient gathered
+// from the particle cell list, same level only with refinement zones), and the viscous traction of
 // the NFM Laplacian's wall term (4.85), each Shepard-interpolated (2.40-2.41) at
 // every wall quadrature point q from the particles around it, then integrated:
 //   F_w = sum_{q in w} s_q [ <P_p>_q n_out + rho0 nu <(u_i - u_q) / |d_n|>_q ].
@@ -37,11 +37,11 @@ struct WallTraction {
   field_view_t<field::Mass, D> m;
   field_view_t<field::DensityGradient, D> grad_rho;
   Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace> traction;  // (q, 2D): pressure force, viscous force
-  field_view_t<field::ShepardGamma, D> gamma;                       // gamma_i (the velocity state's free-surface test)
   // Levels only: Kernel is the scene's kernel at R = 1, R2 the coarsest level's R^2
   RefinementZones<D> zones = {};
   field_view_t<field::AprBirthLevel, D> birth = {};
   field_view_t<field::AprGuard, D> guard = {};
+  bool velocity_muscl = false;  // scheme.wall_velocity_reconstruction
 
   // <grad u>_i of the velocity's MUSCL state (4.30), over the particles within R_i of i
   // (same birth level, SPH or guard, with refinement zones: i's own L. list)
@@ -51,9 +51,6 @@ struct WallTraction {
     if constexpr (Levels) {
       R_i = zones.R[birth(i)];
       R2_i = R_i * R_i;
-      S.shepard = m(i) / rho(i) * level_kernel<D>(zones, W, birth(i), 0.0);
-    } else {
-      S.shepard = m(i) / rho(i) * W.value(0.0);
     }
     for_each_point_within<D>(cells, box, x, xi, R2_i, [&](const int j, const Vec<D>& xij, const double r) {
       if (j == i || r <= 0.0) return;
@@ -62,12 +59,9 @@ struct WallTraction {
       }
       // Levels: W is the kernel at R = 1; the scale of grad W cancels in the renormalisation
       const double dW = W.derivative(r / R_i);
-      double Wr;
-      if constexpr (Levels) Wr = level_kernel<D>(zones, W, birth(i), r);
-      else Wr = W.value(r);
-      S.add(m(j) / rho(j), xij, (dW / r) * xij, load<D>(u, j) - ui, Wr);
+      S.add(m(j) / rho(j), xij, (dW / r) * xij, load<D>(u, j) - ui);
     });
-    return S.gradient(gamma(i));
+    return S.gradient();
   }
 
   KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
@@ -88,7 +82,8 @@ struct WallTraction {
       const double w = m(i) / rho_i * Wr;
       const double c2 = eos.c2(rho_i);
       const Vec<D> ui = load<D>(u, i);
-      const double un = wall_normal_velocity<D>(velocity_gradient(i, load<D>(x, i), ui), xiq, ui, uq, n);
+      const double un = velocity_muscl ? wall_normal_velocity<D>(velocity_gradient(i, load<D>(x, i), ui), xiq, ui, uq, n)
+                                       : dot(ui - uq, n);
       sp += w * normal_flux_pressure<D>(rho_i, P(i), c2, kmath::sqrt(c2), load<D>(grad_rho, i), xiq, un);
       sv += (-w / fluid_side_dn<D>(xiq, n, dn_min)) * (ui - uq);
       sw += w;

@@ -17,12 +17,13 @@
 // particle's (u_i - u_q).n: the reconstruction may only reduce the impedance term, never
 // reverse or enlarge it. Unlimited, the dam break at c0 = 1480 m/s blew up (a front particle
 // whose one-sided gradient reversed the sign of u_f.n was pulled into the floor).
-// Where a free surface cuts the support deeply (the fluid's Shepard sum below 0.7 gamma_i) the
-// gradient of a few neighbours is not trusted and the state stays first order, u_f = u_i.
-// Measured: without this test a spray particle of the violent impact's run-up jet (40 per
-// length) ended 0.09 dx from the ceiling, a leak (so with 0.5); with 0.7 or 0.9 none. The dam
-// break at 10 x 20, c0 = 1480 m/s, lags the c0 = 15 m/s front by at most 7.7 % (no test),
-// 8.6 % (0.7), 10.3 % (0.9; the thin surge is all surface there), 10.6 % (no reconstruction).
+// Opt-in (scheme.wall_velocity_reconstruction, off by default): measured variants in
+// docs/validation.md (stability_dam_break_real_sound_speed). A free-surface test (first order
+// where the fluid's Shepard sum is below 0.7 or 0.9 gamma_i, or faded out between 0.5 and 0.9)
+// was tried and dropped: at 0.7 a surge-tip particle ran ahead at 20 x 40 (front speed 29 %
+// off), at 0.9 and faded the c0 = 1480 lag came back (10.3 %, 10.6 % at 10 x 20). Without it,
+// the violent impact at 40 per length leaves one spray particle 0.09 dx from the ceiling
+// (wall_leaks 1), which is why the reconstruction is not the default.
 #include "kernels/Math.hpp"
 #include "kernels/Vec.hpp"
 
@@ -32,12 +33,9 @@ template <int D>
 struct VelocityGradientSum {
   Mat<D> M = Mat<D>::zero();  // sum_j w_j (x_j - x_i) (x) grad_i W_ij
   Mat<D> G = Mat<D>::zero();  // sum_j w_j (u_j - u_i) (x) grad_i W_ij
-  double shepard = 0.0;        // sum_j w_j W_ij, i included (the caller starts it at w_i W(0))
 
   // xij = x_i - x_j; any constant factor of grad W cancels in the renormalisation
-  KOKKOS_INLINE_FUNCTION void add(const double w, const Vec<D>& xij, const Vec<D>& gradW, const Vec<D>& du,
-                                  const double Wr) {
-    shepard += w * Wr;
+  KOKKOS_INLINE_FUNCTION void add(const double w, const Vec<D>& xij, const Vec<D>& gradW, const Vec<D>& du) {
     for (int a = 0; a < D; ++a)
       for (int b = 0; b < D; ++b) {
         M.a[a][b] -= w * xij[a] * gradW[b];
@@ -45,11 +43,11 @@ struct VelocityGradientSum {
       }
   }
 
-  // <grad u>_i (row a: grad of u_a); zero where a free surface cuts the support
-  // (shepard < 0.7 gamma_i) or M_i is singular, which leaves the first-order state u_f = u_i
-  KOKKOS_INLINE_FUNCTION Mat<D> gradient(const double gamma_i) const {
+  // <grad u>_i (row a: grad of u_a); zero where M_i is singular (an isolated particle),
+  // which leaves the first-order state u_f = u_i
+  KOKKOS_INLINE_FUNCTION Mat<D> gradient() const {
     Mat<D> B, out = Mat<D>::zero();
-    if (shepard < 0.7 * gamma_i || !invert(M, B, 1e-12)) return out;
+    if (!invert(M, B, 1e-12)) return out;
     for (int a = 0; a < D; ++a)
       for (int b = 0; b < D; ++b)
         for (int c = 0; c < D; ++c) out.a[a][b] += G.a[a][c] * B.a[c][b];

@@ -491,7 +491,10 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
   // scheme
   if (const YAML::Node sc = root["scheme"]) {
     r.only_keys(sc, "scheme", {"viscous_term", "delta_sph", "artificial_viscosity", "background_pressure",
-                               "time_integrator", "cfl", "shifting", "consistent_laplacian"});
+                               "time_integrator", "cfl", "shifting", "consistent_laplacian",
+                               "wall_velocity_reconstruction"});
+    if (sc["wall_velocity_reconstruction"])
+      s.wall_velocity_reconstruction = r.boolean(sc["wall_velocity_reconstruction"], "scheme.wall_velocity_reconstruction");
     if (sc["viscous_term"]) {
       const std::string w = r.word(sc["viscous_term"], "scheme.viscous_term", {"none", "morris", "monaghan_gingold"});
       s.viscous_term = w == "morris" ? ViscousTerm::Morris : w == "monaghan_gingold" ? ViscousTerm::MonaghanGingold : ViscousTerm::None;

@@ -603,6 +603,7 @@ void Simulation<D>::evaluate() {
         pass.list = a.list;
         pass.m = a.m;
         pass.clearance = 0.5 * scene_.dx;
+        pass.velocity_muscl = scene_.wall_velocity_reconstruction;
         pass.run(n);
       };
       if (morris_walls)
@@ -1006,9 +1007,9 @@ std::vector<WallForce> Simulation<D>::wall_forces() {
                                                                wall_eos(), 0.05 * R_, box_, p_.get(field::Position{}),
                                                                p_.get(field::Velocity{}), p_.get(field::Density{}),
                                                                p_.get(field::Pressure{}), p_.get(field::Mass{}),
-                                                               p_.get(field::DensityGradient{}), traction,
-                                                               p_.get(field::ShepardGamma{}), apr_.zones(),
-                                                               p_.get(field::AprBirthLevel{}), p_.get(field::AprGuard{})});
+                                                               p_.get(field::DensityGradient{}), traction, apr_.zones(),
+                                                               p_.get(field::AprBirthLevel{}), p_.get(field::AprGuard{}),
+                                                               scene_.wall_velocity_reconstruction});
     });
   else
     with_kernel<D>(scene_.kernel, R_, [&](auto W) {
@@ -1017,8 +1018,8 @@ std::vector<WallForce> Simulation<D>::wall_forces() {
                                                         wall_eos(), 0.05 * R_, box_, p_.get(field::Position{}),
                                                         p_.get(field::Velocity{}), p_.get(field::Density{}),
                                                         p_.get(field::Pressure{}), p_.get(field::Mass{}),
-                                                        p_.get(field::DensityGradient{}), traction,
-                                                        p_.get(field::ShepardGamma{})});
+                                                        p_.get(field::DensityGradient{}), traction, {}, {}, {},
+                                                        scene_.wall_velocity_reconstruction});
     });
   // several ranks: each wall point is counted by the rank that owns its cell (its
   // support is complete there: owned particles and halos)

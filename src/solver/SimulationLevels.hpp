@@ -294,17 +294,19 @@ void Simulation<D>::evaluate_levels() {
                              WallFluxPass<D, decltype(W), true, true>{walls_.points(), wall_cells(l), W, Rl * Rl, a.body, scene_.nu, weos,
                                                                       0.05 * Rl, box_, a.P_min, a.x, a.u, a.rho, a.P, a.grad_rho,
                                                                       p_.get(field::ShepardGamma{}), a.du, a.drho, laplacian_weights_, a.list, a.m,
-                                                                      0.5 * Rl / scene_.R_over_dx});
+                                                                      0.5 * Rl / scene_.R_over_dx, scene_.wall_velocity_reconstruction});
       else if (scene_.viscous_term != ViscousTerm::None)
         Kokkos::parallel_for("ondine::NFM::WallFlux", Kokkos::RangePolicy<ExecSpace>(b, e),
                              WallFluxPass<D, decltype(W), true, false>{walls_.points(), wall_cells(l), W, Rl * Rl, a.body, scene_.nu, weos,
                                                                        0.05 * Rl, box_, a.P_min, a.x, a.u, a.rho, a.P, a.grad_rho,
-                                                                       p_.get(field::ShepardGamma{}), a.du, a.drho, {}, a.list, a.m, 0.5 * Rl / scene_.R_over_dx});
+                                                                       p_.get(field::ShepardGamma{}), a.du, a.drho, {}, a.list, a.m, 0.5 * Rl / scene_.R_over_dx,
+                                                                        scene_.wall_velocity_reconstruction});
       else
         Kokkos::parallel_for("ondine::NFM::WallFlux", Kokkos::RangePolicy<ExecSpace>(b, e),
                              WallFluxPass<D, decltype(W), false, false>{walls_.points(), wall_cells(l), W, Rl * Rl, a.body, scene_.nu, weos,
                                                                         0.05 * Rl, box_, a.P_min, a.x, a.u, a.rho, a.P, a.grad_rho,
-                                                                        p_.get(field::ShepardGamma{}), a.du, a.drho, {}, a.list, a.m, 0.5 * Rl / scene_.R_over_dx});
+                                                                        p_.get(field::ShepardGamma{}), a.du, a.drho, {}, a.list, a.m, 0.5 * Rl / scene_.R_over_dx,
+                                                                        scene_.wall_velocity_reconstruction});
     });
   }
 }
