@@ -16,6 +16,16 @@ using namespace ondine;
 
 namespace {
 
+// a tank 0.4 m wide open at the top, dx 0.02 m (the wall-family and mother-shifting tests)
+std::string open_tank_2d() {
+  return std::string(
+      "dimension: 2\n"
+      "domain: {min: [-0.01, -0.01], max: [0.41, 0.3]}\n"
+      "fluid: {rho0: 1000, sound_speed: 10}\n"
+      "discretisation: {dx: 0.02, R_over_dx: 3}\n"
+      "walls: [{name: tank, points: [[0, 0.3], [0, 0], [0.4, 0], [0.4, 0.3]], closed: false, fluid_side: left, condition: slip}]\n");
+}
+
 // A periodic channel 0.6 x 0.4 m (dx 0.02 m) of fluid moving at `speed` along x,
 // with one static refinement box in the middle (or none), linear EOS with a
 // background pressure so that a pressure-gradient error would show.
@@ -106,11 +116,7 @@ TEST_CASE("APR: a family refined next to a wall lies on the fluid side, on a fin
   // the floor. Each such family is moved up until its centre is dx_m/2 from the floor, so its
   // daughters sit dx_f/2 and 3 dx_f/2 above it (kernels/apr/Refinement.hpp, DaughterWallClearance).
   const std::string y =
-      "dimension: 2\n"
-      "domain: {min: [-0.01, -0.01], max: [0.41, 0.3]}\n"
-      "fluid: {rho0: 1000, sound_speed: 10}\n"
-      "discretisation: {dx: 0.02, R_over_dx: 3}\n"
-      "walls: [{name: tank, points: [[0, 0.3], [0, 0], [0.4, 0], [0.4, 0.3]], closed: false, fluid_side: left, condition: slip}]\n"
+      open_tank_2d() +
       "fluid_blocks: [{min: [-0.008, -0.008], max: [0.392, 0.192], wall_clearance: 0.05}]\n"
       "forces: {gravity: [0, -9.81]}\n"
       "scheme: {time_integrator: rk4}\n"
@@ -212,11 +218,7 @@ TEST_CASE("APR: clumped mother guards are shifted apart, towards their daughters
   // the clumps stay; with it they are pushed apart, against the concentration of the daughters'
   // level, which a free surface or a wall cuts alike: no mother is pushed above the water.
   const std::string y =
-      "dimension: 2\n"
-      "domain: {min: [-0.01, -0.01], max: [0.41, 0.3]}\n"
-      "fluid: {rho0: 1000, sound_speed: 10}\n"
-      "discretisation: {dx: 0.02, R_over_dx: 3}\n"
-      "walls: [{name: tank, points: [[0, 0.3], [0, 0], [0.4, 0], [0.4, 0.3]], closed: false, fluid_side: left, condition: slip}]\n"
+      open_tank_2d() +
       "fluid_blocks: [{min: [0, 0], max: [0.4, 0.192], pressure: hydrostatic}]\n"
       "forces: {gravity: [0, -9.81]}\n"
       "scheme: {time_integrator: rk4, delta_sph: 0.1}\n"

@@ -446,6 +446,7 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
                  {"delta_sph", scene.delta_sph},
                  {"artificial_viscosity", scene.artificial_viscosity},
                  {"background_pressure", scene.background_pressure},
+                 {"wall_velocity_reconstruction", scene.wall_velocity_reconstruction && !scene.walls.empty()},
                  {"time_integrator", to_string(scene.integrator)}};
   j["errors"] = report.errors;
   j["snapshots"] = snapshots.entries().size();
