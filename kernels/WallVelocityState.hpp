@@ -9,7 +9,8 @@
 // du/dx > 0 on the floor, so dv/dy < 0) that velocity is -(du/dx) d, and rho c (du/dx) d is
 // a spurious wall pressure proportional to c0 that holds the flow back. Measured on the
 // dam break at 20 x 40 (docs/validation.md): the front at c0 = 1480 m/s lagged the c0 = 15
-// m/s front by 4.7 %, 1.1 % at T = 3.15 with this reconstruction.
+// m/s front by 4.7 %, 1.1 % at T = 3.15 with this reconstruction; at 50 x 100 it does not
+// help (3.1 % with it in both runs, 2.81 % without).
 //
 // Limiter (not in the seed; the seed's 4.32 only bounds |u.n| by 0.1 c): minmod cannot use a
 // state beyond the wall (the seed's remark), but the wall's own normal velocity is known,
