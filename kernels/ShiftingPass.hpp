@@ -13,6 +13,7 @@
 // with renormalised gradients (2.42)-(2.44) of velocity and density.
 // Writes the shifted state into (x_out, u_out, rho_out); the caller swaps.
 #include "kernels/NeighbourLoops.hpp"
+#include "kernels/VelocityGradientSum.hpp"
 #include "kernels/WallSet.hpp"
 
 namespace ondine {
@@ -42,8 +43,7 @@ struct ShiftingPass {
     const Vec<D> xi = load<D>(x, i);
     const Vec<D> ui = load<D>(u, i);
     const double rho_i = rho(i);
-    Mat<D> M = Mat<D>::zero();
-    Mat<D> Gu = Mat<D>::zero();  // sum_j w_j (u_j - u_i) (x) grad_i W_ij
+    VelocityGradientSum<D> S;  // M_i and the velocity moment
     Vec<D> grho = Vec<D>::zero(), gradC = Vec<D>::zero();
     for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>& xij, const double r) {
       const double rho_j = rho(j);
@@ -52,12 +52,7 @@ struct ShiftingPass {
       const double ratio = W.value(r) / W_dx;
       const double f = 0.2 * ratio * ratio * ratio * ratio;
       gradC += (w * (1.0 + f)) * gradW;
-      const Vec<D> du = load<D>(u, j) - ui;
-      for (int a = 0; a < D; ++a)
-        for (int b = 0; b < D; ++b) {
-          M.a[a][b] -= w * xij[a] * gradW[b];
-          Gu.a[a][b] += w * du[a] * gradW[b];
-        }
+      S.add(w, xij, gradW, load<D>(u, j) - ui);
       grho += (w * (rho_j - rho_i)) * gradW;
     });
     if constexpr (Walls) {
@@ -69,15 +64,12 @@ struct ShiftingPass {
     const double len2 = norm2(dx);
     if (len2 > max_shift * max_shift) dx *= max_shift / kmath::sqrt(len2);
     Mat<D> B;
-    if (!invert(M, B, 1e-12)) B = Mat<D>::identity();
-    // vector gradient: (grad u) = Gu B (right multiplication); scalar: B^T g
+    if (!invert(S.M, B, 1e-12)) B = Mat<D>::identity();
+    // vector gradient: (grad u) = G B (right multiplication); scalar: B^T g
+    const Mat<D> grad_u = S.gradient(B);
     for (int a = 0; a < D; ++a) {
       double du = 0.0;
-      for (int b = 0; b < D; ++b) {
-        double gab = 0.0;
-        for (int c = 0; c < D; ++c) gab += Gu.a[a][c] * B.a[c][b];
-        du += gab * dx[b];
-      }
+      for (int b = 0; b < D; ++b) du += grad_u.a[a][b] * dx[b];
       u_out(i, a) = ui[a] + du;
       x_out(i, a) = box.wrap(xi[a] + dx[a], a);
     }

@@ -1,7 +1,6 @@
 #pragma once
-// MUSCL state of the velocity at a wall point (thesis 4.30), for the normal flux (4.14):
-//   <grad u>_i = (sum_j w_j (u_j - u_i) (x) grad_i W_ij) M_i^{-1},
-//   M_i = sum_j w_j (x_j - x_i) (x) grad_i W_ij                        (2.42-2.44, renormalised)
+// MUSCL state of the velocity at a wall point (thesis 4.30), for the normal flux (4.14), from
+// the renormalised gradient <grad u>_i of kernels/VelocityGradientSum.hpp:
 //   (u_f - u_q).n = (u_i - u_q).n + n . <grad u>_i (x_q - x_i)           (4.30)
 // (4.30) reconstructs the whole state phi = (rho, rho u); without the velocity part the
 // impedance term rho c u_f.n of (4.14) reads the velocity of a particle d ~ dx/2 from the
@@ -26,35 +25,9 @@
 // the violent impact at 40 per length leaves one spray particle 0.09 dx from the ceiling
 // (wall_leaks 1), which is why the reconstruction is not the default.
 #include "kernels/Math.hpp"
-#include "kernels/Vec.hpp"
+#include "kernels/VelocityGradientSum.hpp"
 
 namespace ondine {
-
-template <int D>
-struct VelocityGradientSum {
-  Mat<D> M = Mat<D>::zero();  // sum_j w_j (x_j - x_i) (x) grad_i W_ij
-  Mat<D> G = Mat<D>::zero();  // sum_j w_j (u_j - u_i) (x) grad_i W_ij
-
-  // xij = x_i - x_j; any constant factor of grad W cancels in the renormalisation
-  KOKKOS_INLINE_FUNCTION void add(const double w, const Vec<D>& xij, const Vec<D>& gradW, const Vec<D>& du) {
-    for (int a = 0; a < D; ++a)
-      for (int b = 0; b < D; ++b) {
-        M.a[a][b] -= w * xij[a] * gradW[b];
-        G.a[a][b] += w * du[a] * gradW[b];
-      }
-  }
-
-  // <grad u>_i (row a: grad of u_a); zero where M_i is singular (an isolated particle),
-  // which leaves the first-order state u_f = u_i
-  KOKKOS_INLINE_FUNCTION Mat<D> gradient() const {
-    Mat<D> B, out = Mat<D>::zero();
-    if (!invert(M, B, 1e-12)) return out;
-    for (int a = 0; a < D; ++a)
-      for (int b = 0; b < D; ++b)
-        for (int c = 0; c < D; ++c) out.a[a][b] += G.a[a][c] * B.a[c][b];
-    return out;
-  }
-};
 
 // (u_f - u_q).n at the wall point q (xiq = x_i - x_q), reconstructed by (4.30) and limited
 // between 0 and (u_i - u_q).n (see the head of this file)

@@ -492,7 +492,9 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
   if (const YAML::Node sc = root["scheme"]) {
     r.only_keys(sc, "scheme", {"viscous_term", "delta_sph", "artificial_viscosity", "background_pressure",
                                "time_integrator", "cfl", "shifting", "consistent_laplacian",
-                               "wall_velocity_reconstruction"});
+                               "wall_velocity_reconstruction", "renormalised_continuity"});
+    if (sc["renormalised_continuity"])
+      s.renormalised_continuity = r.boolean(sc["renormalised_continuity"], "scheme.renormalised_continuity");
     if (sc["wall_velocity_reconstruction"])
       s.wall_velocity_reconstruction = r.boolean(sc["wall_velocity_reconstruction"], "scheme.wall_velocity_reconstruction");
     if (sc["viscous_term"]) {
@@ -666,6 +668,8 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
                "expected a value in [0.5, 4] (the daughter guards must complete the fine supports: at least R_f = R_m / 2, i.e. 0.5; the thesis uses R_m, i.e. 1)");
     }
     if (s.shifting) r.fail(ref, "refinement", "particle shifting with refinement zones is not supported");
+    if (s.renormalised_continuity)
+      r.fail(ref, "refinement", "scheme.renormalised_continuity with refinement zones is not supported (the per-level flux does not run it)");
     // width of the daughter-guard layer of level l (in m): transition R_{l-1}
     auto layer = [&s](int level) { return s.refinement_transition * s.R() / std::ldexp(1.0, level - 1); };
     std::function<void(const YAML::Node&, const std::string&, int, int)> zones;

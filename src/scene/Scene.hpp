@@ -129,6 +129,7 @@ struct Scene {
   bool background_pressure = false;   // tensile correction (2.105)
   bool shifting = false;              // particle shifting (2.107)-(2.111), flows without free surface
   bool consistent_laplacian = true;   // Morris scenes with no-slip walls: the consistent Laplacian (false: the thesis' operator)
+  bool renormalised_continuity = false;  // drho/dt from the renormalised divergence (2.42-2.44, 4.86; kernels/RenormalisedContinuity.hpp)
   bool wall_velocity_reconstruction = false;  // MUSCL state of u at NFM wall points (4.30; kernels/WallVelocityState.hpp)
   TimeIntegrator integrator = TimeIntegrator::RK4;
   double cfl_acoustic = 0.375;  // (2.102)

@@ -447,6 +447,7 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
                  {"artificial_viscosity", scene.artificial_viscosity},
                  {"background_pressure", scene.background_pressure},
                  {"wall_velocity_reconstruction", scene.wall_velocity_reconstruction && !scene.walls.empty()},
+                 {"renormalised_continuity", scene.renormalised_continuity},
                  {"time_integrator", to_string(scene.integrator)}};
   j["errors"] = report.errors;
   j["snapshots"] = snapshots.entries().size();

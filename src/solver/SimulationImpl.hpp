@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "kernels/DensityGradientPass.hpp"
+#include "kernels/RenormalisedContinuity.hpp"
 #include "kernels/MorrisLatticeFactor.hpp"
 #include "kernels/WallImpermeability.hpp"
 #include "kernels/apr/LevelSums.hpp"
@@ -612,6 +613,18 @@ void Simulation<D>::evaluate() {
         run(WallFluxPass<D, K, true, false>{});
       else
         run(WallFluxPass<D, K, false, false>{});
+    });
+  }
+  if (scene_.renormalised_continuity) {
+    // replaces the plain divergence of (4.23)/(4.25) by the renormalised one (kernels/RenormalisedContinuity.hpp)
+    with_kernel<D>(scene_.kernel, R_, [&](auto W) {
+      using K = decltype(W);
+      if (walls)
+        RenormalisedContinuity<D, K, true>{list_, box_, W, R_ * R_, walls_.points(), walls_.cells(), a.x, a.u, a.rho, a.m,
+                                           p_.get(field::ShepardGamma{}), a.drho}
+            .run(n);
+      else
+        RenormalisedContinuity<D, K, false>{list_, box_, W, R_ * R_, {}, {}, a.x, a.u, a.rho, a.m, {}, a.drho}.run(n);
     });
   }
 }
