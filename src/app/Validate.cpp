@@ -91,9 +91,9 @@ const std::vector<ValidationCase>& catalogue() {
       // the artificial viscosity alpha h c0 is kept the same physical viscosity (alpha scaled by 10 U_max / c0).
       // Both runs use scheme.renormalised_continuity (kernels/RenormalisedContinuity.hpp): with the plain
       // divergence the c0 = 1480 front lags by 10.6 / 4.7 / 2.81 % at 10 x 20 / 20 x 40 / 50 x 100 (the
-      // discrete continuity holds the surge tip to a wrong divergence at a large c0), with it 2.3 % at
-      // 10 x 20 (docs/validation.md). The bound is checked at 50 x 100 (about 1.7e5 steps, an hour on
-      // one thread); 20 x 40 is recorded, only its stability figures bounded
+      // discrete continuity holds the surge tip to a wrong divergence at a large c0; docs/validation.md).
+      // The bound is checked at 50 x 100 (about 1.7e5 steps, an hour on one thread); 20 x 40 is
+      // recorded, only its stability figures bounded
       {"stability_dam_break_real_sound_speed", "cases/dam_break_2d.yaml", 0.05715, {{0.0028575, true, false}, {0.001143, true}},
        stable({{"max_kinetic_energy_ratio", 2.0}, {"front_contrast_difference", 0.02}}),
        {"fluid.sound_speed=1480", "scheme.artificial_viscosity=0.0002023", "scheme.renormalised_continuity=true"},
