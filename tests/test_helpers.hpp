@@ -1,6 +1,9 @@
 #pragma once
+#include <cmath>
 #include <random>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "scene/CaseFile.hpp"
 #include "solver/Simulation.hpp"
@@ -44,6 +47,26 @@ void disorder(Simulation<D>& sim, double amp, double speed, double rho_jitter, u
   Kokkos::deep_copy(p.get(field::Position{}), hx);
   Kokkos::deep_copy(p.get(field::Velocity{}), hu);
   Kokkos::deep_copy(p.get(field::Density{}), hr);
+}
+
+// The surge front (T, Z) = (t sqrt(2 g / a), x_front / a) of the Martin & Moyce dam break
+// (cases/dam_break_2d.yaml, a = 0.05715 m), sampled every 5 ms to t = 0.17 s (T = 3.1); the
+// simulation is left at t = 0.17 s.
+inline std::vector<std::pair<double, double>> dam_break_front(Simulation<2>& sim) {
+  const double a = 0.05715, g = 9.81;
+  std::vector<std::pair<double, double>> front;
+  for (int k = 0; k <= 34; ++k) {
+    const double t = 0.005 * k;
+    while (sim.time() < t * (1 - 1e-12)) sim.step(t);
+    front.emplace_back(t * std::sqrt(2 * g / a), sim.front_position() / a);
+  }
+  return front;
+}
+
+// The same with the given --set overrides of cases/dam_break_2d.yaml.
+inline std::vector<std::pair<double, double>> dam_break_front(const std::vector<std::string>& sets) {
+  Simulation<2> sim(load_case(std::string(ONDINE_SOURCE_DIR) + "/cases/dam_break_2d.yaml", sets));
+  return dam_break_front(sim);
 }
 
 }  // namespace ondine::test

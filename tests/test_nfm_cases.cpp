@@ -8,6 +8,7 @@
 #include "scene/CaseFile.hpp"
 #include "solver/References.hpp"
 #include "solver/Simulation.hpp"
+#include "test_helpers.hpp"
 
 using namespace ondine;
 
@@ -131,13 +132,7 @@ TEST_CASE("Poiseuille: scheme.consistent_laplacian false selects the thesis' wal
 
 TEST_CASE("Dam break (25 x 50 particles): surge front against Martin & Moyce, no leak", "[nfm][case][dam_break]") {
   Simulation<2> sim(load_case(src + "/cases/dam_break_2d.yaml", {"discretisation.dx=0.002286"}));
-  const double a = 0.05715, g = 9.81;
-  std::vector<std::pair<double, double>> front;
-  for (int k = 0; k <= 34; ++k) {
-    const double t = 0.005 * k;
-    while (sim.time() < t * (1 - 1e-12)) sim.step(t);
-    front.emplace_back(t * std::sqrt(2 * g / a), sim.front_position() / a);
-  }
+  const auto front = test::dam_break_front(sim);
   const auto e = reference::martin_moyce_errors(front);
   INFO("front max relative error " << e.at("front_max_relative_error") << ", speed error "
                                     << e.at("front_speed_relative_error"));

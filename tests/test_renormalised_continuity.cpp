@@ -10,6 +10,7 @@
 #include "scene/CaseFile.hpp"
 #include "solver/References.hpp"
 #include "solver/Simulation.hpp"
+#include "test_helpers.hpp"
 
 using namespace ondine;
 using Catch::Matchers::Contains;
@@ -70,27 +71,6 @@ std::pair<double, double> stagnation_density_rate(bool renormalised) {
   return {worst, worst_surface};
 }
 
-// the largest relative difference of two surge fronts over 0.3 <= T <= 3 (front_contrast_difference)
-double front_difference(const std::vector<double>& z, const std::vector<double>& z_contrast, const std::vector<double>& T) {
-  double worst = 0;
-  for (std::size_t k = 0; k < T.size(); ++k)
-    if (T[k] >= 0.3 && T[k] <= 3) worst = std::max(worst, std::abs(z[k] - z_contrast[k]) / z_contrast[k]);
-  return worst;
-}
-
-std::vector<double> dam_break_front(const std::vector<std::string>& sets, std::vector<double>& T) {
-  Simulation<2> sim(load_case(src + "/cases/dam_break_2d.yaml", sets));
-  const double a = 0.05715, g = 9.81;
-  std::vector<double> z;
-  T.clear();
-  for (int k = 0; k <= 34; ++k) {
-    const double t = 0.005 * k;
-    while (sim.time() < t * (1 - 1e-12)) sim.step(t);
-    T.push_back(t * std::sqrt(2 * g / a));
-    z.push_back(sim.front_position() / a);
-  }
-  return z;
-}
 }  // namespace
 
 TEST_CASE("Renormalised continuity: a linear flow under a free surface and over a slip wall has no density rate below the top row",
@@ -111,12 +91,11 @@ TEST_CASE("Renormalised continuity: the dam-break front at c0 = 1480 m/s stays w
   // stability_dam_break_real_sound_speed`. Measured: 5.4 % with the option; 10.6 % with the plain
   // divergence (docs/validation.md), so the bound separates the two. (At 10 x 20 most particles are
   // within R of the surface or a wall, where M_i is far from gamma_i I and the plain divergence is kept.)
-  std::vector<double> T, Tc;
-  const std::vector<double> z =
-      dam_break_front({"discretisation.dx=0.005715", "fluid.sound_speed=1480", "scheme.artificial_viscosity=0.0002023",
-                       "scheme.renormalised_continuity=true"}, T);
-  const std::vector<double> zc = dam_break_front({"discretisation.dx=0.005715", "scheme.renormalised_continuity=true"}, Tc);
-  const double d = front_difference(z, zc, T);
+  const auto front =
+      test::dam_break_front({"discretisation.dx=0.005715", "fluid.sound_speed=1480", "scheme.artificial_viscosity=0.0002023",
+                       "scheme.renormalised_continuity=true"});
+  const auto contrast = test::dam_break_front({"discretisation.dx=0.005715", "scheme.renormalised_continuity=true"});
+  const double d = reference::front_relative_difference(front, contrast);
   INFO("largest front difference " << d);
   CHECK(d < 0.07);
 }

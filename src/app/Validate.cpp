@@ -223,12 +223,12 @@ void write_profile(const Scene& s, const std::string& dir) {
 
 // Surge fronts of two runs (front.csv: T,Z,...): max over 0.3 <= T <= 3 of |Z_a - Z_b| / Z_b.
 double front_difference(const std::string& a, const std::string& b) {
-  std::vector<std::pair<double, double>> fb;
-  for (const auto& r : reference::read_table(b + "/front.csv")) fb.emplace_back(r[0], r[1]);
-  double worst = 0;
-  for (const auto& r : reference::read_table(a + "/front.csv"))
-    if (r[0] >= 0.3 && r[0] <= 3) worst = std::max(worst, std::abs(r[1] - reference::interpolate(fb, r[0])) / reference::interpolate(fb, r[0]));
-  return fb.empty() ? NAN : worst;
+  auto front = [](const std::string& dir) {
+    std::vector<std::pair<double, double>> f;
+    for (const auto& r : reference::read_table(dir + "/front.csv")) f.emplace_back(r[0], r[1]);
+    return f;
+  };
+  return reference::front_relative_difference(front(a), front(b));
 }
 
 }  // namespace

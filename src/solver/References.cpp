@@ -1,5 +1,6 @@
 #include "solver/References.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -85,6 +86,18 @@ std::vector<std::vector<double>> read_table(const std::string& path) {
     if (!row.empty() && ls.eof()) rows.push_back(row);  // the header line does not parse
   }
   return rows;
+}
+
+double front_relative_difference(const std::vector<std::pair<double, double>>& front,
+                                 const std::vector<std::pair<double, double>>& contrast) {
+  if (contrast.empty()) return NAN;
+  double worst = 0;
+  for (const auto& [T, Z] : front)
+    if (T >= 0.3 && T <= 3) {
+      const double Zc = interpolate(contrast, T);
+      worst = std::max(worst, std::abs(Z - Zc) / Zc);
+    }
+  return worst;
 }
 
 double interpolate(const std::vector<std::pair<double, double>>& s, double x) {

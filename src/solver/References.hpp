@@ -22,6 +22,12 @@ const std::vector<std::pair<double, double>>& martin_moyce_front();
 // 1.5 <= T <= 3) and front_speed_relative_error against the experiment's slope there.
 std::map<std::string, double> martin_moyce_errors(const std::vector<std::pair<double, double>>& front);
 
+// Largest relative difference of a surge front (T, Z) from a contrast front over 0.3 <= T <= 3:
+// max |Z - Z_c(T)| / Z_c(T), Z_c interpolated linearly (front_contrast_difference). NaN when the
+// contrast front is empty.
+double front_relative_difference(const std::vector<std::pair<double, double>>& front,
+                                 const std::vector<std::pair<double, double>>& contrast);
+
 // Area of a simple polygon (shoelace formula; either orientation), m^2.
 double polygon_area(const std::vector<std::array<double, 2>>& points);
 
