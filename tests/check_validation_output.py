@@ -2,7 +2,7 @@
 """Checks the report of `ondine validate` (usage: check_validation_output.py DIR):
 every case has its figure, linked from validation.md; every run has its
 diagnostics; and each profile.csv holds the solution the errors were computed
-from: velocity_l2 (Poiseuille), pressure_linf (hydrostatic) and
+from: velocity_l2 (Poiseuille, Couette), pressure_linf (hydrostatic) and
 max_speed_decay_error (Taylor-Green) recomputed from it match validation.json."""
 import csv
 import json

@@ -80,6 +80,15 @@ TEST_CASE("Command-line overrides change a key, and a bad override is named", "[
 }
 
 TEST_CASE("Bad case files get a message naming file, line and key", "[unit][case]") {
+  SECTION("couette reference without its wall velocity, or a velocity on another reference") {
+    const std::string couette = good + "reference: {type: couette, length: 1.0}\n";
+    CHECK_THAT(error_of(couette), Contains("cases/box.yaml:") && Contains("reference.velocity") && Contains("missing"));
+    CHECK(error_of(good + "reference: {type: couette, length: 1.0, velocity: 1.0}\n").empty());
+    CHECK_THAT(error_of(good + "reference: {type: couette, length: 1.0, velocity: fast}\n"),
+               Contains("reference.velocity") && Contains("speed along x"));
+    CHECK_THAT(error_of(good + "reference: {type: poiseuille, length: 1.0, velocity: 1.0}\n"),
+               Contains("reference.velocity") && Contains("only a couette"));
+  }
   SECTION("unknown key") {
     const auto m = error_of(replace(good, "  mach: 0.1", "  mach: 0.1\n  rho_zero: 3"));
     CHECK_THAT(m, Contains("cases/box.yaml:11:") && Contains("fluid.rho_zero") && Contains("unknown key"));

@@ -130,6 +130,39 @@ TEST_CASE("Poiseuille: scheme.consistent_laplacian false selects the thesis' wal
   CHECK(thesis < 0.01);  // still within the issue's 1 %
 }
 
+// The start-up Couette series (solver/References): the wall values, the steady limit, the
+// fluid at rest at t = 0, and the diffusion equation u_t = nu u_yy it solves (central differences)
+TEST_CASE("Start-up Couette reference: wall values, limits and the diffusion equation", "[unit][reference]") {
+  const double L = 1, V0 = 1, nu = 0.1;
+  for (double t : {0.01, 0.3, 1.0}) {
+    CHECK(reference::couette_startup(0, t, L, V0, nu) == Approx(0).margin(1e-14));
+    CHECK(reference::couette_startup(L, t, L, V0, nu) == Approx(V0).margin(1e-14));
+  }
+  for (double y : {0.1, 0.37, 0.5, 0.9}) {
+    CHECK(reference::couette_startup(y, 100.0, L, V0, nu) == Approx(V0 * y / L).margin(1e-14));  // steady
+    CHECK(std::abs(reference::couette_startup(y, 0.0, L, V0, nu)) < 1e-3);  // at rest (series truncated)
+    const double t = 0.3, ht = 1e-4, hy = 1e-3;
+    const double ut = (reference::couette_startup(y, t + ht, L, V0, nu) - reference::couette_startup(y, t - ht, L, V0, nu)) / (2 * ht);
+    const double uyy = (reference::couette_startup(y + hy, t, L, V0, nu) - 2 * reference::couette_startup(y, t, L, V0, nu) +
+                        reference::couette_startup(y - hy, t, L, V0, nu)) / (hy * hy);
+    INFO("y = " << y << ": u_t " << ut << ", nu u_yy " << nu * uyy);
+    CHECK(ut == Approx(nu * uyy).epsilon(1e-4));  // central differences: O(h^2) truncation, 1.4e-5 at y = 0.1
+    CHECK(std::abs(ut) > 1e-3);  // the transient is still alive at t = 0.3 s
+  }
+}
+
+// Start-up Couette (cases/couette_2d.yaml, Re = 10, at t = 1 s while the transient is 37 % of its
+// start) on the first two rungs of `ondine validate --case couette_2d`. Measured: 4.39e-4 (L/25),
+// 1.14e-4 (L/50), order 1.95; the steady profile V0 y / L alone is 0.37 off at t = 1 s.
+TEST_CASE("Start-up Couette between a sliding and a resting NFM no-slip wall converges to the series", "[nfm][case][couette]") {
+  const double e25 = run_case("couette_2d.yaml", {}).errors().at("velocity_l2");
+  const double e50 = run_case("couette_2d.yaml", {"discretisation.dx=0.02"}).errors().at("velocity_l2");
+  const double order = std::log(e25 / e50) / std::log(2.0);
+  INFO("velocity L2 error " << e25 << " (L/25), " << e50 << " (L/50): order " << order);
+  CHECK(e50 < 3e-4);
+  CHECK(order >= 1.5);
+}
+
 TEST_CASE("Dam break (25 x 50 particles): surge front against Martin & Moyce, no leak", "[nfm][case][dam_break]") {
   Simulation<2> sim(load_case(src + "/cases/dam_break_2d.yaml", {"discretisation.dx=0.002286"}));
   const auto front = test::dam_break_front(sim);

@@ -63,6 +63,10 @@ const std::vector<ValidationCase>& catalogue() {
        {{"velocity_l2", 0.05}, {"mass_drift", 1e-12}}, {"fluid.sound_speed=20"}},
       {"poiseuille_2d", "cases/poiseuille_2d.yaml", 1.0, {{0.04, false}, {0.02, false}, {0.01, true}},
        {{"velocity_l2", 0.01}}, {}},
+      // start-up Couette (Morris et al. 1997), Re = 10, at t = 1 s: the transient and the sliding wall.
+      // Measured 4.4e-4 (L/25) and 1.1e-4 (L/50), order 1.95; the bound is a regression guard
+      {"couette_2d", "cases/couette_2d.yaml", 1.0, {{0.04, false}, {0.02, false}, {0.01, true}},
+       {{"velocity_l2", 1e-3}, {"wall_leaks", 0.5}}, {}},
       {"hydrostatic_tank_2d", "cases/hydrostatic_tank_2d.yaml", 0.5, {{0.05, false}, {0.025, false}, {0.0125, true}},
        {{"pressure_linf", 0.03}, {"kinetic_over_potential", 1e-3}, {"wall_leaks", 0.5}}, {}},
       // The immersed body of issue 3 (an L-shaped NFM polygon of area 0.03 m^2 in still water,
@@ -71,7 +75,8 @@ const std::vector<ValidationCase>& catalogue() {
       // and at dx = 0.04 the radius 0.12 m spans them: buoyancy_error 0.67, not a rung)
       {"immersed_body_2d", "cases/polygon_body_2d.yaml", 0.2, {{0.02, false}, {0.01, false}, {0.005, true}},
        {{"buoyancy_error", 0.03}, {"wall_leaks", 0.5}}, {}, {}, {"pressure_linf"}},
-      {"dam_break_2d", "cases/dam_break_2d.yaml", 0.05715, {{0.002286, false}, {0.001143, true}},
+      // Martin & Moyce's dam break: 25 x 50 (quick), 50 x 100 and 100 x 200 particles in the column
+      {"dam_break_2d", "cases/dam_break_2d.yaml", 0.05715, {{0.002286, false}, {0.001143, true}, {0.0005715, true}},
        {{"front_max_relative_error", 0.2}, {"front_speed_relative_error", 0.1}}, {}},
       // Lid-driven cavity, Re = 1000, against Ghia et al. (1982): coarse rungs, full level only
       // (30 lid passages; 25 x 25 puts R = L/6, wider than the boundary layers: recorded, not bounded).
@@ -177,8 +182,8 @@ void write_profile(const Scene& s, const std::string& dir) {
       const double decay = std::exp(-2 * s.nu * k * k * r[0]);
       o << r[0] << "," << r[7] << "," << b.tg_amplitude * decay << "," << r[6] << "," << rows.front()[6] * decay * decay << "\n";
     }
-  } else if (kind == ReferenceKind::Poiseuille || kind == ReferenceKind::Hydrostatic || kind == ReferenceKind::GhiaRe100 ||
-             kind == ReferenceKind::GhiaRe1000) {
+  } else if (kind == ReferenceKind::Poiseuille || kind == ReferenceKind::Couette || kind == ReferenceKind::Hydrostatic ||
+             kind == ReferenceKind::GhiaRe100 || kind == ReferenceKind::GhiaRe1000) {
     const std::string file = last_snapshot(dir);
     if (file.empty()) return;
     const SnapshotData d = read_snapshot(file);
@@ -191,12 +196,14 @@ void write_profile(const Scene& s, const std::string& dir) {
     const std::vector<double>& u = column("velocity");
     const Vec3 o0 = s.reference.origin;
     const double L = s.reference.length;
-    if (kind == ReferenceKind::Poiseuille) {
+    if (kind == ReferenceKind::Poiseuille || kind == ReferenceKind::Couette) {
       o << "y,u,u_exact\n";
       for (std::size_t i = 0; i < d.particles; ++i) {
-        const double y = x[3 * i + 1] - o0[1];
-        o << y << "," << u[3 * i] << ","
-          << reference::poiseuille_startup(std::min(std::max(y, 0.0), L), d.time, L, s.body_force[0] + s.gravity[0], s.nu) << "\n";
+        const double y = std::min(std::max(x[3 * i + 1] - o0[1], 0.0), L);
+        o << x[3 * i + 1] - o0[1] << "," << u[3 * i] << ","
+          << (kind == ReferenceKind::Couette ? reference::couette_startup(y, d.time, L, s.reference.velocity, s.nu)
+                                             : reference::poiseuille_startup(y, d.time, L, s.body_force[0] + s.gravity[0], s.nu))
+          << "\n";
       }
     } else if (kind == ReferenceKind::Hydrostatic) {
       const auto& p = column("pressure");

@@ -642,18 +642,24 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
 
   // reference solution
   if (const YAML::Node rf = root["reference"]) {
-    r.only_keys(rf, "reference", {"type", "length", "origin"});
+    r.only_keys(rf, "reference", {"type", "length", "origin", "velocity"});
     const std::string t = r.word(r.required(rf, "reference", "type"), "reference.type",
-                                 {"poiseuille", "hydrostatic", "martin_moyce", "ghia_re100", "ghia_re1000"});
+                                 {"poiseuille", "couette", "hydrostatic", "martin_moyce", "ghia_re100", "ghia_re1000"});
     s.reference.kind = t == "poiseuille" ? ReferenceKind::Poiseuille
+                       : t == "couette" ? ReferenceKind::Couette
                        : t == "hydrostatic" ? ReferenceKind::Hydrostatic
                        : t == "martin_moyce" ? ReferenceKind::MartinMoyce
                        : t == "ghia_re100" ? ReferenceKind::GhiaRe100 : ReferenceKind::GhiaRe1000;
     s.reference.length = r.positive(r.required(rf, "reference", "length"), "reference.length", " (m)");
     if (rf["origin"]) s.reference.origin = r.vector(rf["origin"], "reference.origin", D, " (m)");
     if (D != 2) r.fail(rf, "reference", "these references are 2D");
-    if (s.reference.kind == ReferenceKind::Poiseuille && !(s.nu > 0))
-      r.fail(rf["type"], "reference.type", "poiseuille needs fluid.viscosity > 0");
+    if ((s.reference.kind == ReferenceKind::Poiseuille || s.reference.kind == ReferenceKind::Couette) && !(s.nu > 0))
+      r.fail(rf["type"], "reference.type", t + " needs fluid.viscosity > 0");
+    if (s.reference.kind == ReferenceKind::Couette)
+      s.reference.velocity = r.number(r.required(rf, "reference", "velocity"), "reference.velocity",
+                                      "the speed along x of the wall at y = origin + length (m/s)");
+    else if (rf["velocity"])
+      r.fail(rf["velocity"], "reference.velocity", "only a couette reference takes a wall velocity");
   }
 
   // adaptive particle refinement (thesis 5.4, docs/apr.md): nested boxes, one level per depth

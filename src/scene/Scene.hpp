@@ -50,11 +50,12 @@ struct Wall {
 };
 
 // The analytic or experimental reference a case is compared with (errors in summary.json).
-enum class ReferenceKind { None, Poiseuille, Hydrostatic, MartinMoyce, GhiaRe100, GhiaRe1000 };
+enum class ReferenceKind { None, Poiseuille, Couette, Hydrostatic, MartinMoyce, GhiaRe100, GhiaRe1000 };
 struct Reference {
   ReferenceKind kind = ReferenceKind::None;
   double length = 0;  // poiseuille: channel height L; hydrostatic: water depth H; martin_moyce: column width a; ghia: cavity side (m)
-  Vec3 origin{0, 0, 0};  // poiseuille: bottom wall point; hydrostatic: tank bottom; martin_moyce: back wall at the floor (m)
+  Vec3 origin{0, 0, 0};  // poiseuille, couette: bottom wall point; hydrostatic: tank bottom; martin_moyce: back wall at the floor (m)
+  double velocity = 0;   // couette: speed along x of the wall at y = origin + length, from t = 0 (m/s)
 };
 
 struct Probe {

@@ -13,6 +13,11 @@ namespace ondine::reference {
 //   - sum_n 4 F L^2 / (nu pi^3 (2n+1)^3) sin(pi y (2n+1) / L) exp(-(2n+1)^2 pi^2 nu t / L^2).
 double poiseuille_startup(double y, double t, double L, double F, double nu);
 
+// Start-up plane Couette flow between walls y = 0 (at rest) and y = L (moving at V0 along x
+// from t = 0; Morris et al. 1997): u(y, t) = V0 y / L
+//   + sum_{n>=1} 2 V0 (-1)^n / (n pi) sin(n pi y / L) exp(-n^2 pi^2 nu t / L^2).
+double couette_startup(double y, double t, double L, double V0, double nu);
+
 // Martin & Moyce (1952), n^2 = 2, Table 2: surge front Z = x/a against T = t sqrt(2 g / a)
 // (cases/reference/martin_moyce1952_front_n2_2.csv gives the source chain of these digits).
 const std::vector<std::pair<double, double>>& martin_moyce_front();

@@ -1222,8 +1222,9 @@ std::map<std::string, double> Simulation<D>::errors() const {
   }
   const Reference& ref = scene_.reference;
   const int n = n_own_;
-  if (ref.kind == ReferenceKind::Poiseuille) {
-    // start-up Poiseuille (Morris et al. 1997) at the current time, driven by the body force along x
+  if (ref.kind == ReferenceKind::Poiseuille || ref.kind == ReferenceKind::Couette) {
+    // start-up Poiseuille driven by the body force along x, or start-up Couette driven by the
+    // upper wall (Morris et al. 1997), at the current time
     auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.get(field::Position{}));
     auto hu = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.get(field::Velocity{}));
     const double L = ref.length, F = scene_.body_force[0] + scene_.gravity[0];
@@ -1233,7 +1234,9 @@ std::map<std::string, double> Simulation<D>::errors() const {
     // of 1e-5 relative near the walls that halved the near-wall error of a fine Poiseuille run.)
     const int m = 1000;
     std::vector<double> table(m + 1);
-    for (int k = 0; k <= m; ++k) table[k] = reference::poiseuille_startup(L * k / m, t_, L, F, scene_.nu);
+    for (int k = 0; k <= m; ++k)
+      table[k] = ref.kind == ReferenceKind::Couette ? reference::couette_startup(L * k / m, t_, L, ref.velocity, scene_.nu)
+                                                    : reference::poiseuille_startup(L * k / m, t_, L, F, scene_.nu);
     Kokkos::View<double*, Kokkos::HostSpace> tab(table.data(), m + 1);
     double num = 0, den = 0, num_wall = 0, den_wall = 0;
     // with refinement zones: the SPH particles only (guards are interpolated copies), each with its radius
