@@ -199,11 +199,8 @@ void write_profile(const Scene& s, const std::string& dir) {
     if (kind == ReferenceKind::Poiseuille || kind == ReferenceKind::Couette) {
       o << "y,u,u_exact\n";
       for (std::size_t i = 0; i < d.particles; ++i) {
-        const double y = std::min(std::max(x[3 * i + 1] - o0[1], 0.0), L);
-        o << x[3 * i + 1] - o0[1] << "," << u[3 * i] << ","
-          << (kind == ReferenceKind::Couette ? reference::couette_startup(y, d.time, L, s.reference.velocity, s.nu)
-                                             : reference::poiseuille_startup(y, d.time, L, s.body_force[0] + s.gravity[0], s.nu))
-          << "\n";
+        const double y = x[3 * i + 1] - o0[1];
+        o << y << "," << u[3 * i] << "," << reference::channel_startup(s, y, d.time) << "\n";
       }
     } else if (kind == ReferenceKind::Hydrostatic) {
       const auto& p = column("pressure");

@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "scene/Scene.hpp"
+
 namespace ondine::reference {
 
 // Start-up plane Poiseuille flow between walls y = 0 and y = L driven by a body
@@ -17,6 +19,11 @@ double poiseuille_startup(double y, double t, double L, double F, double nu);
 // from t = 0; Morris et al. 1997): u(y, t) = V0 y / L
 //   + sum_{n>=1} 2 V0 (-1)^n / (n pi) sin(n pi y / L) exp(-n^2 pi^2 nu t / L^2).
 double couette_startup(double y, double t, double L, double V0, double nu);
+
+// The channel reference of a scene (reference.type poiseuille or couette) at height y above
+// reference.origin (clamped to [0, L]) and time t: poiseuille_startup with F = body force +
+// gravity along x, or couette_startup with V0 = reference.velocity.
+double channel_startup(const Scene& s, double y, double t);
 
 // Martin & Moyce (1952), n^2 = 2, Table 2: surge front Z = x/a against T = t sqrt(2 g / a)
 // (cases/reference/martin_moyce1952_front_n2_2.csv gives the source chain of these digits).
