@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Pressure noise at the level interface of an APR run, against the uniform runs.
 
-Issue 7: "no spurious pressure oscillation at level interfaces (the pressure jump
+The APR requirement: "no spurious pressure oscillation at level interfaces (the pressure jump
 across an interface stays within the noise of the uniform run)". For each SPH
 particle i (guards excluded) the pressure noise is P_i - a_i, where a_i + b_i.(x - x_i)
 is the weighted least-squares linear fit of the pressure of the SPH particles

@@ -3,8 +3,11 @@
 #include <Kokkos_Core.hpp>
 #include <mpi.h>
 
+#include <unistd.h>
+
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 
 #include "app/BuildInfo.hpp"
@@ -28,6 +31,11 @@ std::string version_text() {
 
 int run_app(int argc, char** argv, int ranks, int rank) {
   CLI::App app{"Ondine: data-parallel SPH for free-surface hydrodynamics (Kokkos)", "ondine"};
+  const std::string threads_note =
+      "Threads: OMP_NUM_THREADS sets their number. Unless OMP_PROC_BIND or OMP_PLACES is set, ondine binds them with "
+      "OMP_PROC_BIND=spread OMP_PLACES=threads (one process) or leaves them unbound under mpirun with several ranks "
+      "(Open MPI binds the ranks); an explicit setting always wins.";
+  app.footer(threads_note);
   app.set_version_flag("--version", version_text());
   app.require_subcommand(1);
   auto* run = app.add_subcommand("run", "run a case file to completion");
@@ -40,6 +48,7 @@ int run_app(int argc, char** argv, int ranks, int rank) {
   run->add_flag("--quiet", quiet, "no progress line");
   run->add_flag("--profile", profile, "wall time of every Kokkos kernel (rank 0's) -> OUT/profile_kernels.json");
   run->add_option("--restart", restart, "continue from a checkpoint (OUT/checkpoint.h5), on any number of ranks");
+  run->footer(threads_note);
   auto* validate = app.add_subcommand("validate", "run the validation cases over a resolution ladder (docs/validation.md)");
   ondine::ValidateOptions vopt;
   validate->add_option("--case", vopt.cases, "case name (repeatable; default: all)");
@@ -118,7 +127,24 @@ int run_app(int argc, char** argv, int ranks, int rank) {
 
 }  // namespace
 
+// Thread binding: OpenMP reads OMP_PROC_BIND and OMP_PLACES when its runtime loads, before
+// main, so the defaults are set by starting the program again with them. A user's setting
+// of either variable always wins. One process: spread threads over the cores
+// (OMP_PROC_BIND=spread, OMP_PLACES=threads), as `make run` does; under mpirun (Open MPI's
+// OMPI_COMM_WORLD_SIZE > 1) the ranks share the cores and Open MPI binds each rank, so
+// the threads are not bound again (OMP_PROC_BIND=false).
+void default_thread_binding(char** argv) {
+  if (std::getenv("OMP_PROC_BIND") || std::getenv("OMP_PLACES") || std::getenv("ONDINE_BINDING_SET")) return;
+  const char* ranks = std::getenv("OMPI_COMM_WORLD_SIZE");
+  const bool several = ranks && std::atoi(ranks) > 1;
+  setenv("OMP_PROC_BIND", several ? "false" : "spread", 1);
+  if (!several) setenv("OMP_PLACES", "threads", 1);
+  setenv("ONDINE_BINDING_SET", "1", 1);  // no second restart, whatever happens
+  execv("/proc/self/exe", argv);        // returns only on failure: go on unbound
+}
+
 int main(int argc, char** argv) {
+  default_thread_binding(argv);
   int provided = 0;
   MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
   int ranks = 1, rank = 0;
