@@ -11,7 +11,7 @@
 
 #include "kernels/Fields.hpp"
 #include "kernels/Math.hpp"
-#include "scene/Scene.hpp"
+#include "kernels/InitialKinds.hpp"
 
 namespace ondine {
 

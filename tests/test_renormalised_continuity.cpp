@@ -8,7 +8,7 @@
 
 #include "scene/CaseError.hpp"
 #include "scene/CaseFile.hpp"
-#include "solver/References.hpp"
+#include "reference/References.hpp"
 #include "solver/Simulation.hpp"
 #include "test_helpers.hpp"
 

@@ -14,7 +14,7 @@
 #include "io/AtomicFile.hpp"
 #include "io/SnapshotWriter.hpp"
 #include "scene/CaseFile.hpp"
-#include "solver/References.hpp"
+#include "reference/References.hpp"
 #include "solver/Runner.hpp"
 
 namespace ondine {

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "kernels/InitialKinds.hpp"
+
 namespace ondine {
 
 using Vec3 = std::array<double, 3>;
@@ -14,8 +16,6 @@ enum class KernelType { WendlandC2, QuarticSpline, CubicSpline };
 enum class EosLaw { Tait, Linear };
 enum class ViscousTerm { None, Morris, MonaghanGingold };
 enum class TimeIntegrator { RK4, PredictorCorrector };
-enum class InitialVelocity { Uniform, TaylorGreen };
-enum class InitialPressure { Zero, Hydrostatic, TaylorGreen };
 
 struct Box {
   Vec3 min{0, 0, 0}, max{0, 0, 0};

@@ -1,8 +1,10 @@
 #pragma once
-// Weakly-compressible SPH: state, neighbour structures, the derivative
-// evaluation (EOS, optional density-gradient pass, flux pass) and the time
-// integrators (classical RK4, explicit midpoint predictor-corrector). Templated
-// on dimension only; the physics is chosen once, in FluxDispatch.
+// Weakly-compressible SPH: the particle state and the parts that act on it, each in a
+// file of its own (docs/design.md): the domain (solver/Domain.hpp: cells, lists,
+// decomposition, halos), set-up (SimulationSetup.hpp), lists by level
+// (SimulationLists.hpp), the derivative evaluation (SimulationEvaluate.hpp), the time
+// integrators (SimulationStep.hpp) and the observers (SimulationObservers.hpp).
+// Templated on dimension only; the physics is chosen once, in FluxDispatch.
 // On several MPI ranks each rank owns the particles of its ORB subdomain
 // (indices 0 .. owned()-1) followed by halo copies of its neighbours'; every
 // public call is collective and returns global figures.
@@ -27,6 +29,7 @@
 #include "kernels/FluidRegion.hpp"
 #include "scene/Scene.hpp"
 #include "solver/AdaptiveRefinement.hpp"
+#include "solver/Domain.hpp"
 #include "solver/WallModel.hpp"
 
 namespace ondine {
@@ -60,6 +63,19 @@ struct BlowUp : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// One level of the evaluation: a uniform run has one, level 0, over all its owned
+// particles; with refinement zones there is one per level (particles sorted by level,
+// each level's SPH particles first, then its guards; docs/apr.md). Every pass of an
+// evaluation runs once per level with the level's radius, list and wall cells.
+template <int D>
+struct LevelSpan {
+  int level = 0;
+  int first = 0, active_end = 0, end = 0;  // SPH particles [first, active_end), guards [active_end, end)
+  double R = 0, dx = 0;
+  NeighbourList<D> list;   // the level's SPH pairs (L. with zones; the uniform list otherwise)
+  CellList<D> wall_cells;  // wall points binned at R
+};
+
 template <int D>
 class Simulation {
  public:
@@ -77,21 +93,22 @@ class Simulation {
   ParticleSet<D>& particles() { return p_; }
   const ParticleSet<D>& particles() const { return p_; }
   std::size_t size() const { return static_cast<std::size_t>(n_own_); }  // particles this rank owns
-  std::int64_t global_size() const { return comm_.sum(static_cast<std::int64_t>(n_own_)); }
-  const Communicator& comm() const { return comm_; }
+  std::int64_t global_size() const { return comm().sum(static_cast<std::int64_t>(n_own_)); }
+  const Communicator& comm() const { return domain_.comm(); }
+  const Domain<D>& domain() const { return domain_; }
   // distributed runs: balance indicator tau (5.30) at the last list build, rebalances,
   // particles migrated, wall seconds in migration and halo exchange, halo copies here
-  double balance() const { return tau_; }
-  int rebalances() const { return rebalances_; }
-  std::int64_t migrated() const { return exchange_.migrated(); }
-  double exchange_seconds() const { return exchange_.seconds(); }
-  int halo_count() const { return exchange_.halo_count(); }
-  const Decomposition& decomposition() const { return decomposition_; }
+  double balance() const { return domain_.balance(); }
+  int rebalances() const { return domain_.rebalances(); }
+  std::int64_t migrated() const { return domain_.exchange().migrated(); }
+  double exchange_seconds() const { return domain_.exchange().seconds(); }
+  int halo_count() const { return domain_.exchange().halo_count(); }
+  const Decomposition& decomposition() const { return domain_.decomposition(); }
   // the neighbour list is rebuilt at the next evaluation (a checkpoint does it, so
   // that a restarted run takes the same path)
   // (with refinement zones: the next step starts with a bookkeeping, as a restart's does)
   void invalidate_neighbours() {
-    list_valid_ = false;
+    domain_.invalidate_lists();
     bookkeeping_due_ = true;
   }
   // owned rows of the state fields (io/Checkpoint.hpp) on the host: name -> (rows, components);
@@ -104,27 +121,32 @@ class Simulation {
   CheckpointRefinement refinement_state() const;
   std::uint64_t refinement_checksum() const;
   std::int64_t pair_count() const;            // pairs within R (both ways) at the last list build
-  std::int64_t neighbour_builds() const { return builds_; }
+  std::int64_t neighbour_builds() const { return domain_.builds(); }
   // lattice quadrature factor of the Morris Laplacian (kernels/MorrisLatticeFactor.hpp); 1 without it
   double morris_factor() const { return morris_factor_; }
-
-  Diagnostics diagnostics() const;
+  // the levels of the evaluation (one without refinement zones)
+  std::vector<LevelSpan<D>> levels() const;
+  double R() const { return R_; }
   const Diagnostics& initial_diagnostics() const { return initial_; }
+
+  // Observers (solver/SimulationObservers.hpp): they read the state and change none of it.
+  Diagnostics diagnostics() const;
   std::vector<ProbeSample> sample_probes() const;
   std::vector<ProbeSample> sample_at(const std::vector<Vec3>& points) const;
   // free-surface elevation at each of the scene's wave gauges (kernels/WaveGauge.hpp)
   std::vector<double> wave_elevations();
-  // Error figures against the analytic solution the scene has, if any.
-  std::map<std::string, double> errors() const;
+  // x of the leading edge of the fluid (max x + dx/2), for the dam-break front
+  double front_position() const;
 
   // Derivatives (du/dt, drho/dt, pressure) at the current state; public for tests.
   void evaluate();
 
   // NFM walls
   bool has_walls() const { return !walls_.empty(); }
+  const WallModel<D>& walls() const { return walls_; }
   std::vector<WallForce> wall_forces();
   // impermeability corrections since t = 0 (kernels/WallImpermeability.hpp), all ranks; carried by checkpoints
-  std::int64_t wall_corrections() const { return comm_.sum(wall_corrections_); }
+  std::int64_t wall_corrections() const { return comm().sum(wall_corrections_); }
   // particles on the solid side of a wall or closer than `clearance` (default 0.1 dx) to one
   std::int64_t wall_leaks(double clearance = -1) const;
   // free-surface flag (4.86-4.87) into field::FreeSurface, at output times
@@ -136,8 +158,6 @@ class Simulation {
   // guards' velocity, density and density gradient with refinement zones), so that an
   // output, a checkpoint or a restart does not change the run; nothing without zones
   void finish_output();
-  // x of the leading edge of the fluid (max x + dx/2), for the dam-break front
-  double front_position() const;
 
   // adaptive particle refinement (only with refinement zones; docs/apr.md)
   bool refinement_on() const { return apr_on_; }
@@ -150,69 +170,52 @@ class Simulation {
   void relist_for_output();
 
  private:
+  // set-up (solver/SimulationSetup.hpp)
   void fill(std::int64_t first, std::int64_t end);
   void load_checkpoint(const CheckpointSlice& restart);
   void remove_outside_fluid();
-  void update_walls(double t);
+  void build_fluid_region();
+  // lists (solver/SimulationLists.hpp): one path, uniform or by level
   void ensure_neighbours();
-  void rebuild_neighbours(bool may_rebalance);
+  // roles: recomputed at a bookkeeping (zones only), kept otherwise
+  void rebuild_lists(bool roles, bool may_rebalance);
   void decompose(bool by_pairs);
-  template <class Relist>
-  void check_balance(std::int64_t pairs, bool may_rebalance, Relist&& relist);
-  void refresh_halos();
-  void reorder_by_cell();
-  double time_step() const;
-  void stage_update(double c_dt, double acc_weight, bool first);
-  RungeKuttaViews<D> stage_views() const;
-  void check_state(double dt);
-  // APR: the per-level derivative evaluation, the bookkeeping at a step start, the lists
-  void evaluate_levels();
-  bool consistent_laplacian() const;
-  WallEos wall_eos() const;
-  FluxArgs<D> state_flux_args(int n);
   void refinement_step_start();
   long space_guards();  // kernels/apr/GuardSpacing.hpp: the daughter guards shifted once per step
   void refinement_bookkeeping();
-  // roles: computed at a bookkeeping, kept otherwise; several ranks: migration, sort by
-  // (level, role), halos with their levels and roles, then the lists
-  void rebuild_level_lists(bool roles, bool may_rebalance);
   void refresh_guard_halos();       // several ranks: the interpolated fields of the guards' halo copies
-  void allocate_stage_storage();
-  void update_free_surface_levels();
-  std::vector<ProbeSample> sample_levels(const std::vector<Vec3>& points) const;
   void build_level_wall_cells();
   const CellList<D>& wall_cells(int level) const { return level == 0 ? walls_.cells() : level_wall_cells_[level]; }
+  // evaluation (solver/SimulationEvaluate.hpp)
+  void update_walls(double t);
+  bool consistent_laplacian() const;
+  WallEos wall_eos() const;
+  FluxArgs<D> state_flux_args(int n);
+  double background_pressure_min(const field_view_t<field::Pressure, D>& P, int n) const;
+  // stepping (solver/SimulationStep.hpp)
+  double time_step() const;
+  void stage_update(double c_dt, double acc_weight, bool first);
+  RungeKuttaViews<D> stage_views() const;
+  void allocate_stage_storage();
+  void shift_particles();
+  void check_state(double dt);
 
   Scene scene_;
-  Communicator comm_;
+  Domain<D> domain_;
   ParticleSet<D> p_;
-  PeriodicBox<D> box_;
-  double R_, cutoff_, skin_len_ = 0;
-  double morris_factor_ = 1.0;  // kappa of kernels/MorrisLatticeFactor.hpp (Morris viscosity only)
-  CellList<D> cells_;
-  NeighbourList<D> list_;
-  field_view_t<field::Position, D> x_at_build_;
-  // decomposition: global grid, this rank's grid (own cells + halo ring) and the
-  // box its integrator wraps positions in (periodic only along axes it spans)
-  CellGrid<D> global_grid_, local_grid_;
-  PeriodicBox<D> local_box_;
-  Decomposition decomposition_;
-  OrbLookup<D> orb_;
-  ParticleExchange<D> exchange_;
   int n_own_ = 0;
   std::int64_t lattice_first_ = 0;
-  bool halos_fresh_ = true;
-  double tau_ = 1.0, achieved_tau_ = 2.0;
-  int rebalances_ = 0;
+  double R_, skin_len_ = 0;
+  double morris_factor_ = 1.0;  // kappa of kernels/MorrisLatticeFactor.hpp (Morris viscosity only)
   FluxFunction<D> flux_ = nullptr;
   WallModel<D> walls_;
   LaplacianWeightView<D> laplacian_weights_;  // scratch of evaluate() (kernels/ConsistentLaplacian.hpp)
   FluidRegion<D> region_;
   double stage_time_ = 0;
   double t_ = 0;
-  std::int64_t steps_ = 0, builds_ = 0;
+  std::int64_t steps_ = 0;
   std::int64_t wall_corrections_ = 0;  // this rank's impermeability corrections (kernels/WallImpermeability.hpp)
-  bool list_valid_ = false;
+  Diagnostics initial_;
   // APR: the next step start runs the bookkeeping even if the lists are valid (after a
   // checkpoint, a restart, or a list rebuild at an output)
   bool bookkeeping_due_ = false;
@@ -221,7 +224,6 @@ class Simulation {
   field_view_t<field::Velocity, D> saved_u_;
   field_view_t<field::Density, D> saved_rho_;
   field_view_t<field::DensityGradient, D> saved_grad_rho_;
-  Diagnostics initial_;
   AdaptiveRefinement<D> apr_;
   bool apr_on_ = false;
   Kokkos::View<double* [D], Kokkos::LayoutRight, MemSpace> guard_shift_;  // per particle: GuardSpacing's shift

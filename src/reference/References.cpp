@@ -1,4 +1,4 @@
-#include "solver/References.hpp"
+#include "reference/References.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,5 @@
+#include "reference/ErrorNormsImpl.hpp"
+
+namespace ondine {
+template std::map<std::string, double> reference_errors(const Simulation<3>&);
+}  // namespace ondine

@@ -1,0 +1,165 @@
+#pragma once
+// What a run writes at each output instant: the snapshot (HDF5 + XDMF) and the rows of
+// its time series (diagnostics.csv, probes.csv, walls.csv, front.csv, waves.csv), and the
+// figures it keeps over the whole run (density range, kinetic energy, escapes, the
+// dam-break front). A restarted run takes back the rows of the earlier run up to the
+// restart time. Collective; rank 0 writes the text files.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "io/SnapshotWriter.hpp"
+#include "reference/References.hpp"
+#include "solver/RunOutput.hpp"
+#include "solver/Simulation.hpp"
+
+namespace ondine {
+
+template <int D>
+class RunRecorder {
+ public:
+  RunRecorder(const Scene& scene, const std::string& out_dir, const Communicator& comm, Simulation<D>& sim)
+      : scene_(scene),
+        snapshots_(out_dir, scene.name, comm),
+        diag_(out_dir + "/diagnostics.csv", comm.rank() == 0),
+        probes_(out_dir + "/probes.csv", comm.rank() == 0),
+        walls_(out_dir + "/walls.csv", comm.rank() == 0),
+        front_(out_dir + "/front.csv", comm.rank() == 0),
+        waves_(out_dir + "/waves.csv", comm.rank() == 0) {
+    waves_.text() << "time,step";
+    for (const WaveGauge& g : scene.wave_gauges) waves_.text() << "," << g.name << ".elevation";
+    waves_.text() << "\n";
+    diag_.text() << "time,step,dt,mass,momentum_x,momentum_y" << (D == 3 ? ",momentum_z" : "")
+                 << ",kinetic_energy,max_speed,rho_min,rho_max,outside_domain,balance\n";
+    probes_.text() << "time,step";
+    for (const Probe& p : scene.probes) {
+      probes_.text() << "," << p.name << ".pressure," << p.name << ".density";
+      for (int k = 0; k < D; ++k) probes_.text() << "," << p.name << ".u" << "xyz"[k];
+    }
+    probes_.text() << "\n";
+    walls_.text() << "time,step";
+    if (sim.has_walls())
+      for (const WallForce& f : sim.wall_forces())
+        for (const char* part : {"pressure", "viscous"})
+          for (int k = 0; k < D; ++k) walls_.text() << "," << f.name << "." << part << "_f" << "xyz"[k];
+    walls_.text() << "\n";
+    front_.text().precision(8);
+    front_.text() << "T,Z,Z_experiment\n";
+  }
+
+  // a new run: no snapshot of an earlier run with this name is left in the folder
+  void start() { snapshots_.remove_from(0); }
+
+  // a restart at t_start: the series of the earlier run up to it, and the figures over them
+  void resume(double t_start, std::size_t snapshots) {
+    snapshots_.resume(snapshots);
+    if (diag_.resume(t_start))
+      for (const auto& row : diag_.resumed_rows()) {
+        const std::size_t c = 6 + (D == 3);  // kinetic_energy
+        if (row.size() < c + 5) continue;
+        max_ke_ = std::max(max_ke_, row[c]);
+        max_rho_dev_ = std::max({max_rho_dev_, std::abs(row[c + 2] / scene_.rho0 - 1), std::abs(row[c + 3] / scene_.rho0 - 1)});
+        max_outside_ = std::max(max_outside_, static_cast<std::int64_t>(row[c + 4]));
+      }
+    probes_.resume(t_start);
+    waves_.resume(t_start);
+    walls_.resume(t_start);
+    if (dam_break() && front_.resume(t_start * front_time_scale()))
+      for (const auto& row : front_.resumed_rows())
+        if (row.size() >= 2) front_points_.emplace_back(row[0], row[1]);
+  }
+
+  // One output instant: the snapshot and a row of every series. Returns the diagnostics
+  // (d.finite false: the state is no longer finite).
+  Diagnostics record(Simulation<D>& sim, double last_dt) {
+    sim.prepare_output();
+    snapshots_.write(sim.particles(), sim.time(), sim.steps(), static_cast<std::int64_t>(sim.size()));
+    if (sim.has_walls()) {
+      const auto forces = sim.wall_forces();
+      walls_.text() << sim.time() << "," << sim.steps();
+      for (const WallForce& f : forces) {
+        for (int k = 0; k < D; ++k) walls_.text() << "," << f.pressure[k];
+        for (int k = 0; k < D; ++k) walls_.text() << "," << f.viscous[k];
+      }
+      walls_.text() << "\n";
+      walls_.flush();
+    }
+    if (dam_break()) {
+      const double a = scene_.reference.length;
+      const double T = sim.time() * front_time_scale();
+      const double Z = (sim.front_position() - scene_.reference.origin[0]) / a;
+      front_points_.emplace_back(T, Z);
+      front_.text() << T << "," << Z << "," << reference::interpolate(reference::martin_moyce_front(), T) << "\n";
+      front_.flush();
+    }
+    const Diagnostics d = sim.diagnostics();
+    diag_.text() << sim.time() << "," << sim.steps() << "," << last_dt << "," << d.mass;
+    for (int k = 0; k < D; ++k) diag_.text() << "," << d.momentum[k];
+    diag_.text() << "," << d.kinetic_energy << "," << d.max_speed << "," << d.rho_min << "," << d.rho_max << "," << d.outside_domain
+                 << "," << sim.balance() << "\n";
+    if (!scene_.probes.empty()) {
+      const auto samples = sim.sample_probes();
+      probes_.text() << sim.time() << "," << sim.steps();
+      for (const ProbeSample& s : samples) {
+        probes_.text() << "," << s.pressure << "," << s.density;
+        for (int k = 0; k < D; ++k) probes_.text() << "," << s.velocity[k];
+      }
+      probes_.text() << "\n";
+      probes_.flush();
+    }
+    if (!scene_.wave_gauges.empty()) {
+      const auto levels = sim.wave_elevations();
+      waves_.text() << sim.time() << "," << sim.steps();
+      for (double z : levels) waves_.text() << "," << z;
+      waves_.text() << "\n";
+      waves_.flush();
+    }
+    diag_.flush();
+    sim.finish_output();  // the run goes on from its own state (APR: the guards as they were)
+    // stability figures over the whole run (validation.md): density range, kinetic energy, escapes
+    max_rho_dev_ = std::max({max_rho_dev_, std::abs(d.rho_max / scene_.rho0 - 1), std::abs(d.rho_min / scene_.rho0 - 1)});
+    max_ke_ = std::max(max_ke_, d.kinetic_energy);
+    max_outside_ = std::max(max_outside_, d.outside_domain);
+    return d;
+  }
+
+  // after a blow-up: the last good state (the start of the failed step) as a snapshot
+  void record_last_state(const Simulation<D>& sim) {
+    snapshots_.write(sim.particles(), sim.time(), sim.steps(), static_cast<std::int64_t>(sim.size()));
+  }
+  // whether the last snapshot is older than the simulation's time
+  bool behind(const Simulation<D>& sim) const {
+    return snapshots_.entries().empty() || sim.time() > snapshots_.entries().back().time;
+  }
+  std::size_t snapshot_count() const { return snapshots_.entries().size(); }
+
+  // the figures over the whole run into `errors`: max_density_deviation,
+  // max_kinetic_energy_ratio (of 1/2 M u_ref^2), max_outside_domain, and with the Martin &
+  // Moyce reference the front's errors
+  void add_figures(std::map<std::string, double>& errors, double mass, bool diverged) const {
+    const double ke_scale = 0.5 * mass * scene_.reference_velocity * scene_.reference_velocity;
+    errors["max_density_deviation"] = max_rho_dev_;
+    errors["max_kinetic_energy_ratio"] = ke_scale > 0 ? max_ke_ / ke_scale : 0.0;
+    errors["max_outside_domain"] = static_cast<double>(max_outside_);
+    errors["non_finite"] = diverged ? 1.0 : 0.0;
+    if (dam_break() && !diverged)
+      for (const auto& [k, v] : reference::martin_moyce_errors(front_points_)) errors[k] = v;
+  }
+
+ private:
+  bool dam_break() const { return scene_.reference.kind == ReferenceKind::MartinMoyce; }
+  // T = t sqrt(2 g / a), Martin & Moyce's time
+  double front_time_scale() const { return std::sqrt(2 * std::abs(scene_.gravity[1]) / scene_.reference.length); }
+
+  Scene scene_;
+  SnapshotWriter snapshots_;
+  CsvSeries diag_, probes_, walls_, front_, waves_;
+  std::vector<std::pair<double, double>> front_points_;  // (T, Z)
+  double max_rho_dev_ = 0, max_ke_ = 0;
+  std::int64_t max_outside_ = 0;
+};
+
+}  // namespace ondine

@@ -1,0 +1,21 @@
+#pragma once
+// What a checkpoint records of the refinement zones, and the check that a restart uses
+// the zones it was written with.
+#include <string>
+
+#include "io/Checkpoint.hpp"
+#include "scene/Scene.hpp"
+
+namespace ondine {
+
+// The refinement zones of a case as a checkpoint records them (attribute
+// `refinement_zones`): the transition width, then one line per zone, each number with
+// the fewest significant digits that read back as the same double. A restart requires
+// the case's to be the same text.
+std::string refinement_zone_text(const Scene& s);
+
+// A checkpoint's APR state against the case: both or neither have refinement zones,
+// and the same ones. Throws CheckpointError naming the file and the difference.
+void check_refinement_restart(const Scene& scene, const CheckpointHeader& h, const std::string& path);
+
+}  // namespace ondine

@@ -1,0 +1,190 @@
+#pragma once
+// Simulation<D>: one derivative evaluation (du/dt, drho/dt, P), the same passes for a
+// uniform run (one level) and a run with refinement zones (each level with its radius,
+// list and wall cells; the guards interpolated first, 5.24):
+//   pressure from the EOS; P_min of the background pressure (2.105);
+//   per level: the Shepard factor gamma of the walls (4.55), the density gradient (and the
+//   consistent Laplacian's weights next to no-slip walls);
+//   per level: the fluid flux (FluxDispatch: one compiled term pack), the wall flux
+//   (4.22, 4.25, 4.85; kernels/WallFluxPass.hpp), the renormalised continuity (4.86).
+// Included by SimulationImpl.hpp only.
+#include "kernels/DensityGradientPass.hpp"
+#include "kernels/EquationOfState.hpp"
+#include "kernels/RenormalisedContinuity.hpp"
+#include "kernels/WallFluxPass.hpp"
+#include "kernels/apr/LevelSums.hpp"
+#include "solver/FluxSelect.hpp"
+#include "solver/KernelDispatch.hpp"
+#include "solver/Simulation.hpp"
+
+namespace ondine {
+
+template <int D>
+void Simulation<D>::update_walls(double t) {
+  if (walls_.moving()) walls_.move_to(t);
+  region_.seg = walls_.segments();
+}
+
+// Viscous flows along no-slip walls take the consistent Laplacian (kernels/ConsistentLaplacian.hpp).
+template <int D>
+bool Simulation<D>::consistent_laplacian() const {
+  return !walls_.empty() && uses_consistent_laplacian(scene_);
+}
+
+// The equation of state of the NFM wall pressure (4.14), for the wall flux and the wall
+// forces alike.
+template <int D>
+WallEos Simulation<D>::wall_eos() const {
+  const double eos_gamma = scene_.eos == EosLaw::Tait ? scene_.tait_gamma : 1.0;
+  return WallEos{scene_.rho0, scene_.c0, eos_gamma};
+}
+
+// What every flux pass reads, whatever the level: the box, body force, state views and
+// viscosity; with the consistent Laplacian, its weight array sized for n particles (grown
+// with some slack).
+template <int D>
+FluxArgs<D> Simulation<D>::state_flux_args(int n) {
+  FluxArgs<D> a;
+  a.box = domain_.box();
+  for (int k = 0; k < D; ++k) a.body[k] = scene_.gravity[k] + scene_.body_force[k];
+  a.x = p_.get(field::Position{});
+  a.u = p_.get(field::Velocity{});
+  a.rho = p_.get(field::Density{});
+  a.P = p_.get(field::Pressure{});
+  a.m = p_.get(field::Mass{});
+  a.du = p_.get(field::Acceleration{});
+  a.drho = p_.get(field::DensityRate{});
+  // the lattice factor scales the plain Morris term; the consistent one has its own weights
+  a.nu = scene_.viscous_term == ViscousTerm::Morris && !uses_consistent_laplacian(scene_) ? scene_.nu * morris_factor_ : scene_.nu;
+  if (consistent_laplacian()) {
+    if (static_cast<int>(laplacian_weights_.extent(0)) < n)
+      laplacian_weights_ = LaplacianWeightView<D>("ondine::NFM::laplacian_weights", n + n / 8 + 16);
+    a.laplacian_weights = laplacian_weights_;
+  }
+  return a;
+}
+
+// (2.105): P_min = max(0, -min_k P_k) over the owned particles of every rank
+template <int D>
+double Simulation<D>::background_pressure_min(const field_view_t<field::Pressure, D>& P, int n) const {
+  double pmin = 0;
+  Kokkos::parallel_reduce("ondine::BackgroundPressure::min", Kokkos::RangePolicy<ExecSpace>(0, n), apr::MinOf{P},
+                          Kokkos::Min<double>(pmin));
+  pmin = comm().min(pmin);
+  return pmin < 0 ? -pmin : 0.0;
+}
+
+// The wall flux pass of one level, every member set by name (kernels/WallFluxPass.hpp).
+template <class Pass, int D, class Kernel>
+Pass wall_flux_pass(const FluxArgs<D>& a, const LevelSpan<D>& level, const WallModel<D>& walls, const Kernel& W,
+                    const field_view_t<field::ShepardGamma, D>& gamma, const LaplacianWeightView<D>& weights,
+                    const WallEos& eos, const Scene& scene) {
+  Pass pass;
+  pass.wall = walls.points();
+  pass.wall_cells = level.wall_cells;
+  pass.W = W;
+  pass.R2 = level.R * level.R;
+  pass.body = a.body;
+  pass.nu = scene.nu;
+  pass.eos = eos;
+  pass.min_dn = 0.05 * level.R;
+  pass.box = a.box;
+  pass.P_min = a.P_min;
+  pass.x = a.x;
+  pass.u = a.u;
+  pass.rho = a.rho;
+  pass.P = a.P;
+  pass.grad_rho = a.grad_rho;
+  pass.gamma = gamma;
+  pass.du = a.du;
+  pass.drho = a.drho;
+  pass.weights = weights;
+  pass.list = level.list;
+  pass.m = a.m;
+  pass.clearance = 0.5 * level.dx;
+  pass.velocity_muscl = scene.wall_velocity_reconstruction;
+  return pass;
+}
+
+template <int D>
+void Simulation<D>::evaluate() {
+  ensure_neighbours();                 // with zones: lists only; roles change at a step start
+  domain_.refresh_state_halos(p_);     // several ranks: this stage's halos (with zones: the guards' sources)
+  const int n = n_own_, n_all = static_cast<int>(p_.size());
+  const bool walls = !walls_.empty();
+  if (walls) update_walls(stage_time_);
+  if (apr_on_) {
+    apr_.interpolate(p_, domain_.box(), false, walls_.segments());  // guards from this stage's SPH particles (5.24)
+    // several ranks: the guards' halo copies (their density gradient travels after the gradient pass)
+    domain_.refresh(p_, field::Velocity{}, field::Density{});
+    if (walls && (walls_.moving() || level_wall_cells_.empty())) build_level_wall_cells();
+  }
+  FluxArgs<D> a = state_flux_args(n);
+  with_eos<D>(scene_, [&](auto eos) { update_pressure<D>(eos, a.rho, a.P, n_all); });
+  if (scene_.background_pressure) a.P_min = background_pressure_min(a.P, n);
+  const auto gamma = walls ? p_.get(field::ShepardGamma{}) : field_view_t<field::ShepardGamma, D>();
+  // the density gradient feeds delta-SPH and the MUSCL wall state (4.30); next to no-slip
+  // walls its pass also solves the consistent Laplacian's weights
+  const bool gradient = scene_.delta_sph > 0 || walls;
+  const bool morris_walls = consistent_laplacian();
+  if (gradient) a.grad_rho = p_.get(field::DensityGradient{});
+  const std::vector<LevelSpan<D>> levels = this->levels();
+  for (const LevelSpan<D>& L : levels) {
+    if (L.active_end == L.first) continue;
+    const auto range = Kokkos::RangePolicy<ExecSpace>(L.first, L.active_end);
+    if (walls)
+      Kokkos::parallel_for("ondine::NFM::shepard_gamma", range, ShepardGammaPass<D>{walls_.segments(), L.R, domain_.box(), a.x, gamma});
+    if (gradient)
+      with_kernel<D>(scene_.kernel, L.R, [&](auto W) {
+        if (morris_walls)
+          Kokkos::parallel_for("ondine::DensityGradient+consistent_laplacian", range,
+                               DensityGradientPass<D, decltype(W), true>{
+                                   L.list, domain_.box(), W, L.R * L.R, a.x, a.rho, a.m, a.grad_rho,
+                                   {walls_.points(), L.wall_cells, 0.05 * L.R, morris_factor_, gamma, laplacian_weights_}});
+        else
+          Kokkos::parallel_for("ondine::DensityGradient", range,
+                               DensityGradientPass<D, decltype(W)>{L.list, domain_.box(), W, L.R * L.R, a.x, a.rho, a.m, a.grad_rho});
+      });
+  }
+  // with zones the guards' density gradient came with their interpolation (GuardInterpolation.hpp)
+  if (gradient) domain_.refresh(p_, field::DensityGradient{});
+  const WallEos weos = wall_eos();
+  for (const LevelSpan<D>& L : levels) {
+    if (L.active_end == L.first) continue;
+    a.first = L.first;
+    a.n = L.active_end - L.first;
+    a.list = L.list;
+    a.R = L.R;
+    a.delta_coeff = scene_.delta_sph * scene_.c0 * L.R;
+    a.av_alpha_R_c0 = scene_.artificial_viscosity * L.R * scene_.c0;
+    flux_(a);
+    const auto range = Kokkos::RangePolicy<ExecSpace>(L.first, L.active_end);
+    if (walls)
+      with_kernel<D>(scene_.kernel, L.R, [&](auto W) {
+        using K = decltype(W);
+        const auto run = [&](auto pass) {
+          using Pass = decltype(pass);
+          Kokkos::parallel_for("ondine::NFM::wall_flux", range,
+                               wall_flux_pass<Pass>(a, L, walls_, W, gamma, laplacian_weights_, weos, scene_));
+        };
+        if (morris_walls) run(WallFluxPass<D, K, true, true>{});
+        else if (scene_.viscous_term != ViscousTerm::None) run(WallFluxPass<D, K, true, false>{});
+        else run(WallFluxPass<D, K, false, false>{});
+      });
+    if (scene_.renormalised_continuity)
+      // replaces the plain divergence of (4.23)/(4.25) by the renormalised one (kernels/RenormalisedContinuity.hpp)
+      with_kernel<D>(scene_.kernel, L.R, [&](auto W) {
+        using K = decltype(W);
+        if (walls)
+          Kokkos::parallel_for("ondine::RenormalisedContinuity", range,
+                               RenormalisedContinuity<D, K, true>{L.list, domain_.box(), W, L.R * L.R, walls_.points(), L.wall_cells,
+                                                                  a.x, a.u, a.rho, a.m, gamma, a.drho});
+        else
+          Kokkos::parallel_for("ondine::RenormalisedContinuity", range,
+                               RenormalisedContinuity<D, K, false>{L.list, domain_.box(), W, L.R * L.R, {}, {}, a.x, a.u, a.rho, a.m, {},
+                                                                   a.drho});
+      });
+  }
+}
+
+}  // namespace ondine
