@@ -1,11 +1,14 @@
 #pragma once
-// NFM wall terms (thesis 4.20-4.25) and the Shepard correction of the whole
-// flux, run after FluxPass when a scene has walls. For particle i and each wall
-// quadrature point q within R (element length s_q, normal n_out out of the fluid):
+// The generic wall loop: the NFM wall terms (thesis 4.20-4.25) and the Shepard correction
+// of the whole flux, run after FluxPass when a scene has walls. It owns the iteration over
+// the wall quadrature points q within R of particle i (element length s_q, normal n_out out
+// of the fluid) and folds a compile-time pack of wall terms (kernels/wall/*.hpp, chosen in
+// src/solver/WallFluxDispatch.hpp), as FluxPass folds the pair terms:
 //   du_i   += -(1/rho_i) s_q (P_p + P_i) W_iq n_out                       (4.22)
 //   drho_i += -rho_i s_q ((u_q - u_i) . n_out) W_iq                      (4.25)
 //   du_i   += 2 nu s_q (u_i - u_q) / d_n W_iq,  d_n = (x_i - x_q).n_out   (4.85, no-slip walls, viscous scenes)
 // (plus 2 P_min inside the bracket with the background-pressure correction 2.105),
+// (wall::PressureFlux, wall::Continuity, wall::NoSlipViscosity),
 // with the wall pressure P_p of the normal flux (4.14) and its MUSCL state of rho
 // (4.30)-(4.32, kernels/WallPressure.hpp); with scheme.wall_velocity_reconstruction also of u
 // (kernels/WallVelocityState.hpp): the velocity gradient is gathered, for the particles
@@ -29,24 +32,41 @@
 // first row at 0.01 dx: E = -0.074/dx along n_out) is kept: it restores the clearance.
 // The extra neighbour loop runs only for those particles.
 #include "kernels/ConsistentLaplacian.hpp"
+#include "kernels/FluxArgs.hpp"
 #include "kernels/NeighbourLoops.hpp"
 #include "kernels/WallPressure.hpp"
 #include "kernels/WallSet.hpp"
 #include "kernels/WallVelocityState.hpp"
+#include "kernels/wall/WallPointData.hpp"
 
 namespace ondine {
 
-template <int D, class Kernel, bool Viscous, bool Consistent>
+// What a wall flux pass reads: the level's flux arguments (state views, list, box, body
+// force, P_min, the range [first, first + n) and R) and the walls.
+template <int D>
+struct WallFluxArgs {
+  FluxArgs<D> fluid;
+  WallPoints<D> wall;
+  CellList<D> wall_cells;  // the wall points binned at the level's radius
+  field_view_t<field::ShepardGamma, D> gamma;
+  LaplacianWeightView<D> weights;  // the consistent Laplacian's (A_i, b_i), with no-slip walls
+  WallEos eos;
+  double nu = 0;          // the scene's viscosity (no lattice factor: the wall term has its own quadrature)
+  double clearance = 0;   // dx / 2 of the level: the wall-ward correction acts closer than this
+  bool velocity_muscl = false;  // scheme.wall_velocity_reconstruction: the MUSCL state of u (4.30)
+};
+
+template <int D>
+using WallFluxFunction = void (*)(const WallFluxArgs<D>&);
+
+template <int D, class Kernel, class Pack>
 struct WallFluxPass {
-  static_assert(Viscous || !Consistent, "the consistent Laplacian needs the viscous wall term");
   WallPoints<D> wall;
   CellList<D> wall_cells;  // cell list of the wall points, same grid as the particles
   Kernel W;
   double R2;
   Vec<D> body;
-  double nu;
   WallEos eos;
-  double min_dn;               // |d_n| floor of the viscous wall term (0.05 R)
   PeriodicBox<D> box;
   double P_min;                // background pressure (2.105); 0 when the scene does not use it
   field_view_t<field::Position, D> x;
@@ -57,11 +77,17 @@ struct WallFluxPass {
   field_view_t<field::ShepardGamma, D> gamma;
   field_view_t<field::Acceleration, D> du;
   field_view_t<field::DensityRate, D> drho;
-  LaplacianWeightView<D> weights;  // (A_i, b_i) of the consistent Laplacian (DensityGradientPass)
   NeighbourList<D> list;           // the flux pass's list (grad u of the MUSCL state; the wall-ward correction's sum_P)
   field_view_t<field::Mass, D> m;
   double clearance;                // dx / 2 of the level: the wall-ward correction acts closer than this
   bool velocity_muscl = false;     // scheme.wall_velocity_reconstruction: the MUSCL state of u (4.30)
+  Pack terms;
+
+  WallFluxPass(const WallFluxArgs<D>& a, const Pack& pack)
+      : wall(a.wall), wall_cells(a.wall_cells), W(a.fluid.R), R2(a.fluid.R * a.fluid.R), body(a.fluid.body), eos(a.eos),
+        box(a.fluid.box), P_min(a.fluid.P_min), x(a.fluid.x), u(a.fluid.u), rho(a.fluid.rho), P(a.fluid.P),
+        grad_rho(a.fluid.grad_rho), gamma(a.gamma), du(a.fluid.du), drho(a.fluid.drho), list(a.fluid.list), m(a.fluid.m),
+        clearance(a.clearance), velocity_muscl(a.velocity_muscl), terms(pack) {}
 
   // E_i's fluid part sum_P w_j grad_i W_ij (only for particles next to a wall).
   KOKKOS_INLINE_FUNCTION Vec<D> fluid_gradient_sum(const int i, const Vec<D>& xi) const {
@@ -87,10 +113,10 @@ struct WallFluxPass {
     bool have_grad_u = false;
     const double rho_i = rho(i), P_i = P(i);
     const double c2 = eos.c2(rho_i);
-    const double c_i = kmath::sqrt(c2);
-    const Vec<D> g_rho = load<D>(grad_rho, i);
-    Vec<D> acc = Vec<D>::zero(), G = Vec<D>::zero();
-    double dr = 0.0, r_min = clearance;
+    const WallParticle<D> p{i, xi, ui, rho_i, P_i, c2, kmath::sqrt(c2), load<D>(grad_rho, i)};
+    WallSum<D> s{Vec<D>::zero(), 0.0};
+    Vec<D> G = Vec<D>::zero();
+    double r_min = clearance;
     for_each_point_within<D>(wall_cells, box, wall.x, xi, R2, [&](const int q, const Vec<D>& xiq, const double r) {
       const double Wq = W.value(r) * wall.s(q);
       const Vec<D> n = load<D>(wall.n_out, q);
@@ -105,19 +131,9 @@ struct WallFluxPass {
         }
         un = wall_normal_velocity<D>(grad_u, xiq, ui, uq, n);
       }
-      const double P_p = normal_flux_pressure<D>(rho_i, P_i, c2, c_i, g_rho, xiq, un);
-      // (2.105) shifts P_i + P_j by 2 P_min in the fluid sum; its wall counterpart keeps
-      // the shift from pushing particles into the wall (sum_P w grad W + sum_S s W n = 0)
-      acc += (-(P_p + P_i + 2.0 * P_min) * Wq / rho_i) * n;
-      dr -= rho_i * dot(uq - ui, n) * Wq;
-      if constexpr (Viscous) {
-        if (wall.no_slip(q)) {
-          double k = 2.0 * Wq / fluid_side_dn<D>(xiq, n, min_dn);
-          if constexpr (Consistent) k *= LaplacianBasis<D>::weight(weights, i, xiq);
-          acc += (nu * k) * (ui - uq);
-        }
-      }
+      terms.point(p, WallPoint<D>{q, xiq, Wq, n, uq, un}, s);
     });
+    Vec<D>& acc = s.du;
     if (r_min < clearance) {  // wall-ward consistency correction (see the head of this file)
       const double G2 = norm2(G);
       if (G2 > 0.0) {
@@ -131,10 +147,8 @@ struct WallFluxPass {
     }
     const double inv_gamma = 1.0 / gamma(i);
     for (int k = 0; k < D; ++k) du(i, k) = body[k] + (du(i, k) - body[k] + acc[k]) * inv_gamma;
-    drho(i) = (drho(i) + dr) * inv_gamma;
+    drho(i) = (drho(i) + s.drho) * inv_gamma;
   }
-
-  void run(int n) const { Kokkos::parallel_for("ondine::NFM::wall_flux", Kokkos::RangePolicy<ExecSpace>(0, n), *this); }
 };
 
 }  // namespace ondine

@@ -10,18 +10,18 @@
 
 namespace ondine {
 
+namespace errors {
+
+// mass drift against the initial mass; with no walls and every axis periodic, internal
+// forces cancel pairwise and the momentum is P(0) + M (g + f) t exactly
 template <int D>
-std::map<std::string, double> reference_errors(const Simulation<D>& sim) {
+void conservation(const Simulation<D>& sim, const Diagnostics& d, std::map<std::string, double>& e) {
   const Scene& scene = sim.scene();
-  const Communicator& comm = sim.comm();
   const Diagnostics& initial = sim.initial_diagnostics();
   const double t = sim.time();
-  const bool apr_on = sim.refinement_on();
-  std::map<std::string, double> e;
-  const Diagnostics d = sim.diagnostics();
-  e["mass_drift"] = std::abs(d.mass - initial.mass) / initial.mass;
   bool all_periodic = true;
   for (int k = 0; k < D; ++k) all_periodic = all_periodic && scene.periodic[k];
+  e["mass_drift"] = std::abs(d.mass - initial.mass) / initial.mass;
   if (all_periodic && !sim.has_walls() && scene.damping_time == 0) {
     // With no walls, internal forces cancel pairwise: P(t) = P(0) + M (g + f) t exactly.
     double err2 = 0, scale2 = 0;
@@ -33,6 +33,16 @@ std::map<std::string, double> reference_errors(const Simulation<D>& sim) {
     const double scale = std::max(std::sqrt(scale2), d.mass * scene.reference_velocity);
     e["momentum_balance_error"] = std::sqrt(err2) / scale;
   }
+}
+
+// the decaying Taylor-Green vortex (2D, periodic): velocity L2 and Linf, peak-speed decay
+template <int D>
+void taylor_green(const Simulation<D>& sim, const Diagnostics& d, std::map<std::string, double>& e) {
+  const Scene& scene = sim.scene();
+  const Communicator& comm = sim.comm();
+  const double t = sim.time();
+  bool all_periodic = true;
+  for (int k = 0; k < D; ++k) all_periodic = all_periodic && scene.periodic[k];
   bool taylor_green = all_periodic && D == 2;
   for (const FluidBlock& b : scene.blocks) taylor_green = taylor_green && b.velocity_kind == InitialVelocity::TaylorGreen;
   if (taylor_green) {
@@ -70,102 +80,153 @@ std::map<std::string, double> reference_errors(const Simulation<D>& sim) {
     e["velocity_linf"] = comm.max(linf) / amp;
     e["max_speed_decay_error"] = std::abs(d.max_speed - amp) / amp;
   }
-  if (!!sim.has_walls()) {
+}
+
+// wall leaks and crossings, impermeability corrections; with zones the families moved off
+// walls and the guard shifts
+template <int D>
+void walls(const Simulation<D>& sim, std::map<std::string, double>& e) {
+  const Scene& scene = sim.scene();
+  const Communicator& comm = sim.comm();
+  const bool apr_on = sim.refinement_on();
+  if (sim.has_walls()) {
     e["wall_leaks"] = static_cast<double>(sim.wall_leaks());
     e["wall_crossings"] = static_cast<double>(sim.wall_leaks(0.0));  // on the solid side of a wall only
     if (apr_on) e["families_moved_off_walls"] = static_cast<double>(sim.refinement().families_moved());
     if (apr_on && scene.refinement_guard_shifting) e["guard_shifts"] = static_cast<double>(comm.sum(sim.refinement().guard_shifts()));
     e["wall_corrections"] = static_cast<double>(sim.wall_corrections());
   }
+}
+
+// start-up Poiseuille or Couette flow (reference.type poiseuille, couette): velocity L2 over
+// the channel and near its walls
+template <int D>
+void channel(const Simulation<D>& sim, std::map<std::string, double>& e) {
+  const Scene& scene = sim.scene();
+  const Communicator& comm = sim.comm();
+  const Reference& ref = scene.reference;
+  const double t = sim.time();
+  const bool apr_on = sim.refinement_on();
+  const int n = static_cast<int>(sim.size());
+  // start-up Poiseuille driven by the body force along x, or start-up Couette driven by the
+  // upper wall (Morris et al. 1997), at the current time
+  auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::Position{}));
+  auto hu = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::Velocity{}));
+  const double L = ref.length;
+  // the analytic profile is evaluated on a fine table (a host loop over 1001 points, not
+  // particles) and interpolated quadratically: exact for the steady parabola, O(h^3 u''') on
+  // the transient. (A linear interpolation was off by up to h^2 |u''| / 8 = 1e-6 U_max, a bias
+  // of 1e-5 relative near the walls that halved the near-wall error of a fine Poiseuille run.)
+  const int m = 1000;
+  std::vector<double> table(m + 1);
+  for (int k = 0; k <= m; ++k) table[k] = reference::channel_startup(scene, L * k / m, t);
+  Kokkos::View<double*, Kokkos::HostSpace> tab(table.data(), m + 1);
+  double num = 0, den = 0, num_wall = 0, den_wall = 0;
+  // with refinement zones: the SPH particles only (guards are interpolated copies), each with its radius
+  Kokkos::View<int*, Kokkos::HostSpace> guard, birth;
+  if (apr_on) {
+    guard = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::AprGuard{}));
+    birth = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::AprBirthLevel{}));
+  }
+  // one pass on the host mirror: the error is a diagnostic at the end of a run
+  for (int i = 0; i < n; ++i) {
+    if (apr_on && guard(i)) continue;
+    const double y = std::min(std::max(hx(i, 1) - ref.origin[1], 0.0), L);
+    const double f = y / L * m;
+    const int k = std::min(std::max(static_cast<int>(std::lround(f)), 1), m - 1);
+    const double sk = f - k;
+    const double ue = table[k] + 0.5 * sk * (table[k + 1] - table[k - 1]) +
+                      0.5 * sk * sk * (table[k + 1] - 2.0 * table[k] + table[k - 1]);
+    num += (hu(i, 0) - ue) * (hu(i, 0) - ue);
+    den += ue * ue;
+    // the particles whose support is cut by a wall (thesis Table 5.3's boundary error)
+    const double Ri = apr_on ? sim.refinement().R(birth(i)) : sim.R();
+    if (y < Ri || y > L - Ri) {
+      num_wall += (hu(i, 0) - ue) * (hu(i, 0) - ue);
+      den_wall += ue * ue;
+    }
+  }
+  e["velocity_l2"] = std::sqrt(comm.sum(num) / comm.sum(den));
+  den_wall = comm.sum(den_wall);
+  if (den_wall > 0) e["velocity_l2_near_wall"] = std::sqrt(comm.sum(num_wall) / den_wall);
+}
+
+// the lid-driven cavity against Ghia et al. (1982) (reference.type ghia_re100, ghia_re1000)
+template <int D>
+void cavity(const Simulation<D>& sim, std::map<std::string, double>& e) {
+  const Scene& scene = sim.scene();
+  const Reference& ref = scene.reference;
+  // lid-driven cavity: RMS of (u - u_Ghia)/U on the vertical centreline and of (v - v_Ghia)/U on the
+  // horizontal one, Shepard-interpolated at Ghia et al.'s points (the walls' own points excluded)
+  const int column = ref.kind == ReferenceKind::GhiaRe100 ? 1 : 2;
+  const auto slash = scene.source_file.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? "." : scene.source_file.substr(0, slash);
+  const double L = ref.length, U = scene.reference_velocity;
+  for (int line = 0; line < 2; ++line) {
+    const auto table = reference::read_table(dir + (line == 0 ? "/reference/ghia1982_u_vertical_centreline.csv"
+                                                               : "/reference/ghia1982_v_horizontal_centreline.csv"));
+    std::vector<Vec3> pts;
+    std::vector<double> expect;
+    for (const auto& row : table) {
+      if (row[0] <= 0.0 || row[0] >= 1.0) continue;
+      Vec3 pnt = ref.origin;
+      pnt[line == 0 ? 1 : 0] += row[0] * L;  // along the line
+      pnt[line == 0 ? 0 : 1] += 0.5 * L;     // at the centre
+      pts.push_back(pnt);
+      expect.push_back(row[column] * U);
+    }
+    const auto got = sim.sample_at(pts);
+    double sq = 0;
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+      const double d = (got[k].velocity[line == 0 ? 0 : 1] - expect[k]) / U;
+      sq += d * d;
+    }
+    e[line == 0 ? "centreline_u_rms" : "centreline_v_rms"] = std::sqrt(sq / pts.size());
+  }
+}
+
+// still water (reference.type hydrostatic): pressure against rho0 |g| (H - z), kinetic over
+// potential energy
+template <int D>
+void hydrostatic(const Simulation<D>& sim, const Diagnostics& d, std::map<std::string, double>& e) {
+  const Scene& scene = sim.scene();
+  const Communicator& comm = sim.comm();
   const Reference& ref = scene.reference;
   const int n = static_cast<int>(sim.size());
-  if (ref.kind == ReferenceKind::Poiseuille || ref.kind == ReferenceKind::Couette) {
-    // start-up Poiseuille driven by the body force along x, or start-up Couette driven by the
-    // upper wall (Morris et al. 1997), at the current time
-    auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::Position{}));
-    auto hu = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::Velocity{}));
-    const double L = ref.length;
-    // the analytic profile is evaluated on a fine table (a host loop over 1001 points, not
-    // particles) and interpolated quadratically: exact for the steady parabola, O(h^3 u''') on
-    // the transient. (A linear interpolation was off by up to h^2 |u''| / 8 = 1e-6 U_max, a bias
-    // of 1e-5 relative near the walls that halved the near-wall error of a fine Poiseuille run.)
-    const int m = 1000;
-    std::vector<double> table(m + 1);
-    for (int k = 0; k <= m; ++k) table[k] = reference::channel_startup(scene, L * k / m, t);
-    Kokkos::View<double*, Kokkos::HostSpace> tab(table.data(), m + 1);
-    double num = 0, den = 0, num_wall = 0, den_wall = 0;
-    // with refinement zones: the SPH particles only (guards are interpolated copies), each with its radius
-    Kokkos::View<int*, Kokkos::HostSpace> guard, birth;
-    if (apr_on) {
-      guard = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::AprGuard{}));
-      birth = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::AprBirthLevel{}));
-    }
-    // one pass on the host mirror: the error is a diagnostic at the end of a run
-    for (int i = 0; i < n; ++i) {
-      if (apr_on && guard(i)) continue;
-      const double y = std::min(std::max(hx(i, 1) - ref.origin[1], 0.0), L);
-      const double f = y / L * m;
-      const int k = std::min(std::max(static_cast<int>(std::lround(f)), 1), m - 1);
-      const double sk = f - k;
-      const double ue = table[k] + 0.5 * sk * (table[k + 1] - table[k - 1]) +
-                        0.5 * sk * sk * (table[k + 1] - 2.0 * table[k] + table[k - 1]);
-      num += (hu(i, 0) - ue) * (hu(i, 0) - ue);
-      den += ue * ue;
-      // the particles whose support is cut by a wall (thesis Table 5.3's boundary error)
-      const double Ri = apr_on ? sim.refinement().R(birth(i)) : sim.R();
-      if (y < Ri || y > L - Ri) {
-        num_wall += (hu(i, 0) - ue) * (hu(i, 0) - ue);
-        den_wall += ue * ue;
-      }
-    }
-    e["velocity_l2"] = std::sqrt(comm.sum(num) / comm.sum(den));
-    den_wall = comm.sum(den_wall);
-    if (den_wall > 0) e["velocity_l2_near_wall"] = std::sqrt(comm.sum(num_wall) / den_wall);
-  } else if (ref.kind == ReferenceKind::GhiaRe100 || ref.kind == ReferenceKind::GhiaRe1000) {
-    // lid-driven cavity: RMS of (u - u_Ghia)/U on the vertical centreline and of (v - v_Ghia)/U on the
-    // horizontal one, Shepard-interpolated at Ghia et al.'s points (the walls' own points excluded)
-    const int column = ref.kind == ReferenceKind::GhiaRe100 ? 1 : 2;
-    const auto slash = scene.source_file.find_last_of('/');
-    const std::string dir = slash == std::string::npos ? "." : scene.source_file.substr(0, slash);
-    const double L = ref.length, U = scene.reference_velocity;
-    for (int line = 0; line < 2; ++line) {
-      const auto table = reference::read_table(dir + (line == 0 ? "/reference/ghia1982_u_vertical_centreline.csv"
-                                                                 : "/reference/ghia1982_v_horizontal_centreline.csv"));
-      std::vector<Vec3> pts;
-      std::vector<double> expect;
-      for (const auto& row : table) {
-        if (row[0] <= 0.0 || row[0] >= 1.0) continue;
-        Vec3 pnt = ref.origin;
-        pnt[line == 0 ? 1 : 0] += row[0] * L;  // along the line
-        pnt[line == 0 ? 0 : 1] += 0.5 * L;     // at the centre
-        pts.push_back(pnt);
-        expect.push_back(row[column] * U);
-      }
-      const auto got = sim.sample_at(pts);
-      double sq = 0;
-      for (std::size_t k = 0; k < pts.size(); ++k) {
-        const double d = (got[k].velocity[line == 0 ? 0 : 1] - expect[k]) / U;
-        sq += d * d;
-      }
-      e[line == 0 ? "centreline_u_rms" : "centreline_v_rms"] = std::sqrt(sq / pts.size());
-    }
-  } else if (ref.kind == ReferenceKind::Hydrostatic) {
-    // P = rho0 |g| (H - z) for particles deeper than 3 dx; ratio of kinetic to potential energy
-    auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::Position{}));
-    auto hP = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::Pressure{}));
-    auto hm = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::Mass{}));
-    const double g = std::abs(scene.gravity[1]), H = ref.length, z0 = ref.origin[1];
-    double worst = 0, pe = 0;
-    for (int i = 0; i < n; ++i) {
-      const double z = hx(i, 1) - z0;
-      pe += hm(i) * g * z;
-      if (H - z < 3 * scene.dx) continue;
-      worst = std::max(worst, std::abs(hP(i) - scene.rho0 * g * (H - z)));
-    }
-    worst = comm.max(worst);
-    pe = comm.sum(pe);
-    e["pressure_linf"] = worst / (scene.rho0 * g * H);
-    e["kinetic_over_potential"] = d.kinetic_energy / pe;
+  // P = rho0 |g| (H - z) for particles deeper than 3 dx; ratio of kinetic to potential energy
+  auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::Position{}));
+  auto hP = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::Pressure{}));
+  auto hm = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::Mass{}));
+  const double g = std::abs(scene.gravity[1]), H = ref.length, z0 = ref.origin[1];
+  double worst = 0, pe = 0;
+  for (int i = 0; i < n; ++i) {
+    const double z = hx(i, 1) - z0;
+    pe += hm(i) * g * z;
+    if (H - z < 3 * scene.dx) continue;
+    worst = std::max(worst, std::abs(hP(i) - scene.rho0 * g * (H - z)));
+  }
+  worst = comm.max(worst);
+  pe = comm.sum(pe);
+  e["pressure_linf"] = worst / (scene.rho0 * g * H);
+  e["kinetic_over_potential"] = d.kinetic_energy / pe;
+}
+
+}  // namespace errors
+
+template <int D>
+std::map<std::string, double> reference_errors(const Simulation<D>& sim) {
+  std::map<std::string, double> e;
+  const Diagnostics d = sim.diagnostics();
+  errors::conservation(sim, d, e);
+  errors::taylor_green(sim, d, e);
+  errors::walls(sim, e);
+  switch (sim.scene().reference.kind) {
+    case ReferenceKind::Poiseuille:
+    case ReferenceKind::Couette: errors::channel(sim, e); break;
+    case ReferenceKind::GhiaRe100:
+    case ReferenceKind::GhiaRe1000: errors::cavity(sim, e); break;
+    case ReferenceKind::Hydrostatic: errors::hydrostatic(sim, d, e); break;
+    default: break;
   }
   return e;
 }

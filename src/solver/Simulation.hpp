@@ -17,6 +17,7 @@
 #include "kernels/CellList.hpp"
 #include "kernels/ConsistentLaplacian.hpp"
 #include "kernels/FluxArgs.hpp"
+#include "kernels/WallFluxPass.hpp"
 #include "kernels/Integrator.hpp"
 #include "kernels/NeighbourList.hpp"
 #include "kernels/OrbLookup.hpp"
@@ -208,6 +209,7 @@ class Simulation {
   double R_, skin_len_ = 0;
   double morris_factor_ = 1.0;  // kappa of kernels/MorrisLatticeFactor.hpp (Morris viscosity only)
   FluxFunction<D> flux_ = nullptr;
+  WallFluxFunction<D> wall_flux_ = nullptr;  // with walls (WallFluxDispatch.hpp)
   WallModel<D> walls_;
   LaplacianWeightView<D> laplacian_weights_;  // scratch of evaluate() (kernels/ConsistentLaplacian.hpp)
   FluidRegion<D> region_;

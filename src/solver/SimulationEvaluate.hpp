@@ -6,12 +6,12 @@
 //   per level: the Shepard factor gamma of the walls (4.55), the density gradient (and the
 //   consistent Laplacian's weights next to no-slip walls);
 //   per level: the fluid flux (FluxDispatch: one compiled term pack), the wall flux
-//   (4.22, 4.25, 4.85; kernels/WallFluxPass.hpp), the renormalised continuity (4.86).
+//   (WallFluxDispatch: the wall terms 4.22, 4.25, 4.85 folded by the generic wall loop),
+//   the renormalised continuity (4.86).
 // Included by SimulationImpl.hpp only.
 #include "kernels/DensityGradientPass.hpp"
 #include "kernels/EquationOfState.hpp"
 #include "kernels/RenormalisedContinuity.hpp"
-#include "kernels/WallFluxPass.hpp"
 #include "kernels/apr/LevelSums.hpp"
 #include "solver/FluxSelect.hpp"
 #include "solver/KernelDispatch.hpp"
@@ -74,38 +74,6 @@ double Simulation<D>::background_pressure_min(const field_view_t<field::Pressure
   return pmin < 0 ? -pmin : 0.0;
 }
 
-// The wall flux pass of one level, every member set by name (kernels/WallFluxPass.hpp).
-template <class Pass, int D, class Kernel>
-Pass wall_flux_pass(const FluxArgs<D>& a, const LevelSpan<D>& level, const WallModel<D>& walls, const Kernel& W,
-                    const field_view_t<field::ShepardGamma, D>& gamma, const LaplacianWeightView<D>& weights,
-                    const WallEos& eos, const Scene& scene) {
-  Pass pass;
-  pass.wall = walls.points();
-  pass.wall_cells = level.wall_cells;
-  pass.W = W;
-  pass.R2 = level.R * level.R;
-  pass.body = a.body;
-  pass.nu = scene.nu;
-  pass.eos = eos;
-  pass.min_dn = 0.05 * level.R;
-  pass.box = a.box;
-  pass.P_min = a.P_min;
-  pass.x = a.x;
-  pass.u = a.u;
-  pass.rho = a.rho;
-  pass.P = a.P;
-  pass.grad_rho = a.grad_rho;
-  pass.gamma = gamma;
-  pass.du = a.du;
-  pass.drho = a.drho;
-  pass.weights = weights;
-  pass.list = level.list;
-  pass.m = a.m;
-  pass.clearance = 0.5 * level.dx;
-  pass.velocity_muscl = scene.wall_velocity_reconstruction;
-  return pass;
-}
-
 template <int D>
 void Simulation<D>::evaluate() {
   ensure_neighbours();                 // with zones: lists only; roles change at a step start
@@ -160,17 +128,8 @@ void Simulation<D>::evaluate() {
     flux_(a);
     const auto range = Kokkos::RangePolicy<ExecSpace>(L.first, L.active_end);
     if (walls)
-      with_kernel<D>(scene_.kernel, L.R, [&](auto W) {
-        using K = decltype(W);
-        const auto run = [&](auto pass) {
-          using Pass = decltype(pass);
-          Kokkos::parallel_for("ondine::NFM::wall_flux", range,
-                               wall_flux_pass<Pass>(a, L, walls_, W, gamma, laplacian_weights_, weos, scene_));
-        };
-        if (morris_walls) run(WallFluxPass<D, K, true, true>{});
-        else if (scene_.viscous_term != ViscousTerm::None) run(WallFluxPass<D, K, true, false>{});
-        else run(WallFluxPass<D, K, false, false>{});
-      });
+      wall_flux_(WallFluxArgs<D>{a, walls_.points(), L.wall_cells, gamma, laplacian_weights_, weos, scene_.nu, 0.5 * L.dx,
+                                 scene_.wall_velocity_reconstruction});
     if (scene_.renormalised_continuity)
       // replaces the plain divergence of (4.23)/(4.25) by the renormalised one (kernels/RenormalisedContinuity.hpp)
       with_kernel<D>(scene_.kernel, L.R, [&](auto W) {

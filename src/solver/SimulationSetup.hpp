@@ -10,6 +10,7 @@
 #include "kernels/StateHash.hpp"
 #include "scene/CaseFile.hpp"
 #include "solver/FluxSelect.hpp"
+#include "solver/WallFluxDispatch.hpp"
 #include "solver/KernelDispatch.hpp"
 #include "solver/Simulation.hpp"
 
@@ -55,6 +56,7 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
   flux_ = with_kernel<D>(scene.kernel, R_, [&](auto W) { return select_flux<D, decltype(W)>(scene); });
   if (walls) {
     walls_ = WallModel<D>(scene_, domain_.box(), R_);
+    wall_flux_ = with_kernel<D>(scene.kernel, R_, [&](auto W) { return select_wall_flux<D, decltype(W)>(scene); });
     build_fluid_region();
   }
   if (restart) {

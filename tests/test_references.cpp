@@ -1,0 +1,131 @@
+// The reference solutions (src/reference/References.cpp) against their limits, and each
+// error norm of src/reference/ErrorNorms*.{hpp,cpp} against a state whose error is known.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include "reference/ErrorNorms.hpp"
+#include "reference/References.hpp"
+#include "test_helpers.hpp"
+
+using namespace ondine;
+
+namespace {
+
+Scene case_file(const std::string& name, const std::vector<std::string>& sets = {}) {
+  return load_case(std::string(ONDINE_SOURCE_DIR) + "/cases/" + name, sets);
+}
+
+// sets the owned particles' velocity to f(x, y) (host mirror; tests only)
+template <class F>
+void set_velocity(Simulation<2>& sim, F&& f) {
+  auto& p = sim.particles();
+  auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Position{}));
+  auto hu = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Velocity{}));
+  for (std::size_t i = 0; i < sim.size(); ++i) {
+    const auto v = f(hx(i, 0), hx(i, 1));
+    hu(i, 0) = v[0];
+    hu(i, 1) = v[1];
+  }
+  Kokkos::deep_copy(p.get(field::Velocity{}), hu);
+}
+
+}  // namespace
+
+TEST_CASE("Start-up Poiseuille: zero at t = 0 and on the walls, the parabola F y (L - y) / (2 nu) at large t", "[unit][reference]") {
+  const double L = 1.0, F = 2e-3, nu = 1e-2;
+  for (double y : {0.1, 0.3, 0.5, 0.9}) {
+    CHECK(std::abs(reference::poiseuille_startup(y, 0.0, L, F, nu)) < 1e-6 * F * L * L / nu);
+    CHECK(reference::poiseuille_startup(y, 1e4, L, F, nu) == Approx(F / (2 * nu) * y * (L - y)).epsilon(1e-12));
+  }
+  CHECK(reference::poiseuille_startup(0.0, 3.0, L, F, nu) == Approx(0.0).margin(1e-15));
+  CHECK(reference::poiseuille_startup(0.25, 3.0, L, F, nu) == Approx(reference::poiseuille_startup(0.75, 3.0, L, F, nu)).epsilon(1e-12));
+}
+
+TEST_CASE("polygon_area: the shoelace area in either orientation", "[unit][reference]") {
+  const std::vector<std::array<double, 2>> square = {{0, 0}, {2, 0}, {2, 1}, {0, 1}};
+  const std::vector<std::array<double, 2>> reversed(square.rbegin(), square.rend());
+  CHECK(reference::polygon_area(square) == Approx(2.0));
+  CHECK(reference::polygon_area(reversed) == Approx(2.0));
+  CHECK(reference::polygon_area({{0, 0}, {1, 0}, {0, 3}}) == Approx(1.5));
+}
+
+TEST_CASE("interpolate: linear between samples, held at the ends", "[unit][reference]") {
+  const std::vector<std::pair<double, double>> s = {{0, 1}, {1, 3}, {3, 4}};
+  CHECK(reference::interpolate(s, 0.5) == Approx(2.0));
+  CHECK(reference::interpolate(s, 2.0) == Approx(3.5));
+  CHECK(reference::interpolate(s, -1.0) == Approx(1.0));
+  CHECK(reference::interpolate(s, 9.0) == Approx(4.0));
+}
+
+TEST_CASE("read_table: numeric rows, comments and the header skipped", "[unit][reference]") {
+  const std::string path = "read_table_test.csv";
+  {
+    std::ofstream f(path);
+    f << "# a comment\nx,y\n1,2.5\n# another\n3,-4e-3\n";
+  }
+  const auto rows = reference::read_table(path);
+  std::remove(path.c_str());
+  REQUIRE(rows.size() == 2);
+  CHECK(rows[0] == std::vector<double>{1.0, 2.5});
+  CHECK(rows[1] == std::vector<double>{3.0, -4e-3});
+}
+
+TEST_CASE("Martin & Moyce's front: Z = 1 at T = 0 and increasing", "[unit][reference]") {
+  const auto& f = reference::martin_moyce_front();
+  REQUIRE(f.size() > 10);
+  for (std::size_t k = 1; k < f.size(); ++k) {
+    CHECK(f[k].first > f[k - 1].first);
+    CHECK(f[k].second >= f[k - 1].second);
+  }
+  CHECK(reference::interpolate(f, 0.0) == Approx(1.0).margin(0.02));
+}
+
+TEST_CASE("Error norms: Taylor-Green is exact at t = 0 and measures a known perturbation", "[unit][reference]") {
+  Simulation<2> sim(case_file("taylor_green_2d.yaml", {"discretisation.dx=0.05"}));
+  auto e = reference_errors(sim);
+  CHECK(e.at("velocity_l2") < 1e-14);
+  CHECK(e.at("velocity_linf") < 1e-14);
+  CHECK(e.at("mass_drift") == 0.0);
+  CHECK(e.at("momentum_balance_error") < 1e-14);
+  // u + eps U along x everywhere: L2 = eps U sqrt(N) / sqrt(sum |u_exact|^2) = eps / rms(|u|/U) = eps sqrt(2)
+  // (the rms of |u| over a whole period is U / sqrt(2)), Linf = eps
+  const double U = sim.scene().blocks.front().tg_amplitude, k = 2 * M_PI / sim.scene().blocks.front().tg_wavelength, eps = 1e-3;
+  set_velocity(sim, [&](double x, double y) {
+    return std::array<double, 2>{-U * std::cos(k * x) * std::sin(k * y) + eps * U, U * std::sin(k * x) * std::cos(k * y)};
+  });
+  e = reference_errors(sim);
+  CHECK(e.at("velocity_l2") == Approx(eps * std::sqrt(2.0)).epsilon(1e-6));
+  CHECK(e.at("velocity_linf") == Approx(eps).epsilon(1e-9));
+}
+
+TEST_CASE("Error norms: the hydrostatic tank at rest is the hydrostatic pressure", "[unit][reference]") {
+  Simulation<2> sim(case_file("hydrostatic_tank_2d.yaml"));
+  sim.prepare_output();
+  const auto e = reference_errors(sim);
+  CHECK(e.at("pressure_linf") < 1e-9);
+  CHECK(e.at("kinetic_over_potential") == 0.0);
+  CHECK(e.at("wall_leaks") == 0.0);
+  CHECK(e.at("wall_crossings") == 0.0);
+}
+
+TEST_CASE("Error norms: a channel whose velocity is the start-up profile has no error", "[unit][reference]") {
+  Simulation<2> sim(case_file("poiseuille_2d.yaml"));
+  for (int s = 0; s < 5; ++s) sim.step(1e30);
+  const Scene& sc = sim.scene();
+  const double t = sim.time();
+  set_velocity(sim, [&](double, double y) {
+    return std::array<double, 2>{reference::channel_startup(sc, y - sc.reference.origin[1], t), 0.0};
+  });
+  auto e = reference_errors(sim);
+  CHECK(e.at("velocity_l2") < 1e-6);  // the quadratic interpolation of the 1001-point table
+  // 1 % more everywhere: an L2 of 1 %
+  set_velocity(sim, [&](double, double y) {
+    return std::array<double, 2>{1.01 * reference::channel_startup(sc, y - sc.reference.origin[1], t), 0.0};
+  });
+  e = reference_errors(sim);
+  CHECK(e.at("velocity_l2") == Approx(0.01).epsilon(1e-3));
+  CHECK(e.at("velocity_l2_near_wall") == Approx(0.01).epsilon(1e-3));
+}
