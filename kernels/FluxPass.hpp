@@ -5,6 +5,7 @@
 #include <string>
 
 #include "kernels/NeighbourList.hpp"
+#include "kernels/NeighbourLoops.hpp"
 #include "kernels/Terms.hpp"
 
 namespace ondine {
@@ -34,14 +35,10 @@ struct FluxPass {
     q.u_i = load<D>(u, i);
     const Vec<D> xi = load<D>(x, i);
     FluxSum<D> s{Vec<D>::zero(), 0.0};
-    const int nn = list.num_neighbours(i);
-    for (int n = 0; n < nn; ++n) {
-      const int j = list.neighbour(i, n);
-      q.xij = box.delta(xi, load<D>(x, j));
-      const double r2 = norm2(q.xij);
-      if (r2 >= R2) continue;  // in the skin
+    for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>& xij, const double r) {
+      q.xij = xij;
       q.j = j;
-      q.r = kmath::sqrt(r2);
+      q.r = r;
       q.dWdr = W.derivative(q.r);
       q.gradW = (q.dWdr / q.r) * q.xij;
       q.rho_j = rho(j);
@@ -49,7 +46,7 @@ struct FluxPass {
       q.omega_j = m(j) / q.rho_j;
       q.u_j = load<D>(u, j);
       terms.pair(q, s);
-    }
+    });
     store<D>(du, i, s.du + body);
     drho(i) = s.drho;
   }

@@ -94,9 +94,7 @@ struct FreeSurfacePass {
         const double h = 0.5 * R;
         Vec<D> T = xi + h * nt;
         bool blocked = false;
-        const int nn = list.num_neighbours(i);
-        for (int n = 0; n < nn && !blocked; ++n) {
-          const int j = list.neighbour(i, n);
+        for_each_listed_neighbour<D>(list, i, [&](const int j) {
           const Vec<D> xji = box.delta(load<D>(x, j), xi);  // x_j - x_i
           const double rji = kmath::sqrt(norm2(xji));
           const Vec<D> xjT = (xji + xi) - T;
@@ -107,7 +105,8 @@ struct FreeSurfacePass {
             const double across = kmath::sqrt(kmath::fmax(norm2(xjT) - along * along, 0.0));
             blocked = (along < 0 ? -along : along) + across < h;
           }
-        }
+          return blocked;
+        });
         flag = blocked ? 0.0 : 1.0;
       }
     }

@@ -1,9 +1,10 @@
 #pragma once
-// The two ways a pass meets its neighbours, shared by every kernel that is not
-// the term-pack pair loop: through the CSR neighbour list, or through a cell
-// list of points (wall quadrature points, or particles around a wall point).
-// Both call f(index, x_centre - x_point (minimum image), r) for points strictly
-// within sqrt(R2); skin pairs are skipped.
+// The ways a pass meets its neighbours, shared by every kernel, the term-pack pair loop
+// included: through the CSR neighbour list, or through a cell list of points (wall
+// quadrature points, or particles around a wall point). The first two call
+// f(index, x_centre - x_point (minimum image), r) for points strictly within sqrt(R2);
+// skin pairs are skipped. for_each_listed_neighbour visits every entry of the list, the
+// skin's included, until f returns true.
 #include "kernels/CellList.hpp"
 #include "kernels/NeighbourList.hpp"
 
@@ -21,6 +22,13 @@ KOKKOS_INLINE_FUNCTION void for_each_neighbour_within(const NeighbourList<D>& li
     if (r2 >= R2) continue;
     f(j, xij, kmath::sqrt(r2));
   }
+}
+
+template <int D, class F>
+KOKKOS_INLINE_FUNCTION void for_each_listed_neighbour(const NeighbourList<D>& list, const int i, F&& f) {
+  const int nn = list.num_neighbours(i);
+  for (int n = 0; n < nn; ++n)
+    if (f(list.neighbour(i, n))) return;
 }
 
 template <int D, class PositionView, class F>

@@ -4,6 +4,7 @@
 // and Lx of Algorithm 3); the refinement bookkeeping at a step start, the guard spacing.
 // Included by SimulationImpl.hpp only.
 #include "kernels/apr/GuardSpacing.hpp"
+#include "kernels/NeighbourLoops.hpp"
 #include "kernels/apr/LevelSums.hpp"
 #include "solver/KernelDispatch.hpp"
 #include "solver/Simulation.hpp"
@@ -35,9 +36,8 @@ std::int64_t Simulation<D>::pair_count() const {
   std::int64_t total = 0;
   Kokkos::parallel_reduce("ondine::PairCount", Kokkos::RangePolicy<ExecSpace>(0, n_own_),
                           KOKKOS_LAMBDA(const int i, std::int64_t& acc) {
-                            const Vec<D> xi = load<D>(x, i);
-                            for (int n = 0; n < list.num_neighbours(i); ++n)
-                              if (norm2(box.delta(xi, load<D>(x, list.neighbour(i, n)))) < R2) ++acc;
+                            for_each_neighbour_within<D>(list, box, x, i, load<D>(x, i), R2,
+                                                         [&](const int, const Vec<D>&, const double) { ++acc; });
                           },
                           total);
   return comm().sum(total);
