@@ -1,6 +1,6 @@
 #pragma once
 // The state hashes of issue-independent regression runs: six cases, each run a fixed number
-// of steps with one output in the middle (prepare_output, observers, finish_output), then
+// of steps with one output in the middle (an OutputFrame and the observers), then
 // hashed (kernels/StateHash.hpp). The recorded values pin the numerics bitwise: a change that
 // only moves code must keep them; a change of numerics must say why and record new ones.
 #include <cstdint>
@@ -39,13 +39,12 @@ inline std::pair<std::uint64_t, std::uint64_t> run_and_hash(const HashCase& c) {
   for (int s = 0; s < c.steps; ++s) {
     sim.step(1e30);
     if (s == c.steps / 2) {
-      sim.prepare_output();
+      const OutputFrame<2> frame(sim);
       if (sim.has_walls()) sim.wall_forces();
       sim.diagnostics();
       sim.sample_probes();
       sim.wave_elevations();
       sim.front_position();
-      sim.finish_output();
     }
   }
   return {sim.state_checksum(), sim.refinement_on() ? sim.refinement_checksum() : 0};

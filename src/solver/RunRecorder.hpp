@@ -75,7 +75,7 @@ class RunRecorder {
   // One output instant: the snapshot and a row of every series. Returns the diagnostics
   // (d.finite false: the state is no longer finite).
   Diagnostics record(Simulation<D>& sim, double last_dt) {
-    sim.prepare_output();
+    const OutputFrame<D> frame(sim);  // until the end of this call
     snapshots_.write(sim.particles(), sim.time(), sim.steps(), static_cast<std::int64_t>(sim.size()));
     if (sim.has_walls()) {
       const auto forces = sim.wall_forces();
@@ -118,7 +118,6 @@ class RunRecorder {
       waves_.flush();
     }
     diag_.flush();
-    sim.finish_output();  // the run goes on from its own state (APR: the guards as they were)
     // stability figures over the whole run (validation.md): density range, kinetic energy, escapes
     max_rho_dev_ = std::max({max_rho_dev_, std::abs(d.rho_max / scene_.rho0 - 1), std::abs(d.rho_min / scene_.rho0 - 1)});
     max_ke_ = std::max(max_ke_, d.kinetic_energy);

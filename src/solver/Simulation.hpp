@@ -152,13 +152,6 @@ class Simulation {
   std::int64_t wall_leaks(double clearance = -1) const;
   // free-surface flag (4.86-4.87) into field::FreeSurface, at output times
   void update_free_surface();
-  // before a snapshot: pressure from the EOS, Shepard factor and walls at time t, free surface;
-  // with refinement zones, every guard interpolated from the stored state (5.24)
-  void prepare_output();
-  // after the output: puts back what prepare_output changed that the next step reads (the
-  // guards' velocity, density and density gradient with refinement zones), so that an
-  // output, a checkpoint or a restart does not change the run; nothing without zones
-  void finish_output();
 
   // adaptive particle refinement (only with refinement zones; docs/apr.md)
   bool refinement_on() const { return apr_on_; }
@@ -171,6 +164,16 @@ class Simulation {
   void relist_for_output();
 
  private:
+  template <int>
+  friend class OutputFrame;
+  // before a snapshot: pressure from the EOS, Shepard factor and walls at time t, free surface;
+  // with refinement zones, every guard interpolated from the stored state (5.24)
+  void prepare_output();
+  // after the output: puts back what prepare_output changed that the next step reads (the
+  // guards' velocity, density and density gradient with refinement zones), so that an
+  // output, a checkpoint or a restart does not change the run; nothing without zones
+  void finish_output();
+
   // set-up (solver/SimulationSetup.hpp)
   void fill(std::int64_t first, std::int64_t end);
   void load_checkpoint(const CheckpointSlice& restart);
@@ -230,6 +233,25 @@ class Simulation {
   bool apr_on_ = false;
   Kokkos::View<double* [D], Kokkos::LayoutRight, MemSpace> guard_shift_;  // per particle: GuardSpacing's shift
   std::vector<CellList<D>> level_wall_cells_;  // APR with walls: wall points binned at each level's radius
+};
+
+// An output instant of a simulation, as a scope: while the frame lives, the simulation's
+// derived fields are those of its stored state (pressure from the EOS, the walls' Shepard
+// factor and the free-surface flag at time t; with refinement zones, every guard
+// interpolated from the stored state, 5.24), for the snapshot and the observers to read;
+// when it ends, the run goes on from its own state (the guards' fields as the next step
+// reads them are put back), so an output never changes the run. One frame at a time.
+template <int D>
+class OutputFrame {
+ public:
+  explicit OutputFrame(Simulation<D>& sim) : sim_(sim) { sim_.prepare_output(); }
+  ~OutputFrame() { sim_.finish_output(); }
+  OutputFrame(const OutputFrame&) = delete;
+  OutputFrame& operator=(const OutputFrame&) = delete;
+  Simulation<D>& simulation() const { return sim_; }
+
+ private:
+  Simulation<D>& sim_;
 };
 
 extern template class Simulation<2>;
