@@ -1,0 +1,99 @@
+#include <vector>
+
+#include "scene/CaseSections.hpp"
+
+namespace ondine::case_file {
+
+namespace {
+
+// the name of a probe or gauge: it heads CSV columns, so no separators, and unique
+std::string csv_column_name(const Reader& r, const YAML::Node& item, const std::string& key, const std::string& what,
+                            const std::vector<std::string>& taken) {
+  const std::string name = r.text(r.required(item, key, "name"), key + ".name", "a " + what + " name");
+  if (name.find_first_of(", \"") != std::string::npos)
+    r.fail(item["name"], key + ".name", "expected a name without commas, spaces or quotes (it heads CSV columns)");
+  for (const std::string& t : taken)
+    if (t == name) r.fail(item["name"], key + ".name", "duplicate " + what + " name '" + name + "'");
+  return name;
+}
+
+// one wave gauge: a vertical line along the last axis
+WaveGauge read_wave_gauge(const Reader& r, const YAML::Node& item, const std::string& key, const Scene& s) {
+  const int D = s.dimension;
+  r.only_keys(item, key, {"name", "position", "bottom", "top"});
+  WaveGauge g;
+  std::vector<std::string> taken;
+  for (const WaveGauge& q : s.wave_gauges) taken.push_back(q.name);
+  g.name = csv_column_name(r, item, key, "wave gauge", taken);
+  const Vec3 p = r.vector(r.required(item, key, "position"), key + ".position", D - 1, " (m, the horizontal coordinates)");
+  for (int k = 0; k < D - 1; ++k) {
+    g.position[k] = p[k];
+    if (p[k] < s.domain.min[k] || p[k] > s.domain.max[k])
+      r.fail(item["position"], key + ".position", "the gauge lies outside the domain");
+  }
+  g.bottom = r.number(r.required(item, key, "bottom"), key + ".bottom", "a height (m)");
+  g.top = r.number(r.required(item, key, "top"), key + ".top", "a height (m)");
+  if (!(g.top > g.bottom)) r.fail(item["top"], key + ".top", "expected top > bottom");
+  return g;
+}
+
+}  // namespace
+
+void read_probes(const Reader& r, YAML::Node& root, Scene& s) {
+  const int D = s.dimension;
+  if (const YAML::Node pr = root["probes"]) {
+    if (!pr.IsSequence()) r.fail(pr, "probes", "expected a list of {name, position}");
+    for (std::size_t i = 0; i < pr.size(); ++i) {
+      const std::string key = "probes[" + std::to_string(i) + "]";
+      r.only_keys(pr[i], key, {"name", "position"});
+      Probe p;
+      std::vector<std::string> taken;
+      for (const Probe& q : s.probes) taken.push_back(q.name);
+      p.name = csv_column_name(r, pr[i], key, "probe", taken);
+      p.position = r.vector(r.required(pr[i], key, "position"), key + ".position", D, " (m)");
+      for (int k = 0; k < D; ++k)
+        if (p.position[k] < s.domain.min[k] || p.position[k] > s.domain.max[k])
+          r.fail(pr[i]["position"], key + ".position", "the probe lies outside the domain");
+      s.probes.push_back(p);
+    }
+  }
+}
+
+// wave gauges: vertical lines along the last axis
+void read_wave_gauges(const Reader& r, YAML::Node& root, Scene& s) {
+  const int D = s.dimension;
+  if (const YAML::Node wg = root["wave_gauges"]) {
+    if (!wg.IsSequence()) r.fail(wg, "wave_gauges", "expected a list of {name, position, bottom, top}");
+    for (std::size_t i = 0; i < wg.size(); ++i)
+      s.wave_gauges.push_back(read_wave_gauge(r, wg[i], "wave_gauges[" + std::to_string(i) + "]", s));
+    if (!(s.gravity[D - 1] < 0))
+      r.fail(wg, "wave_gauges", "wave gauges measure along the last axis: they need gravity pointing down it (forces.gravity)");
+  }
+}
+
+// reference solution
+void read_reference(const Reader& r, YAML::Node& root, Scene& s) {
+  const int D = s.dimension;
+  if (const YAML::Node rf = root["reference"]) {
+    r.only_keys(rf, "reference", {"type", "length", "origin", "velocity"});
+    const std::string t = r.word(r.required(rf, "reference", "type"), "reference.type",
+                                 {"poiseuille", "couette", "hydrostatic", "martin_moyce", "ghia_re100", "ghia_re1000"});
+    s.reference.kind = t == "poiseuille" ? ReferenceKind::Poiseuille
+                       : t == "couette" ? ReferenceKind::Couette
+                       : t == "hydrostatic" ? ReferenceKind::Hydrostatic
+                       : t == "martin_moyce" ? ReferenceKind::MartinMoyce
+                       : t == "ghia_re100" ? ReferenceKind::GhiaRe100 : ReferenceKind::GhiaRe1000;
+    s.reference.length = r.positive(r.required(rf, "reference", "length"), "reference.length", " (m)");
+    if (rf["origin"]) s.reference.origin = r.vector(rf["origin"], "reference.origin", D, " (m)");
+    if (D != 2) r.fail(rf, "reference", "these references are 2D");
+    if ((s.reference.kind == ReferenceKind::Poiseuille || s.reference.kind == ReferenceKind::Couette) && !(s.nu > 0))
+      r.fail(rf["type"], "reference.type", t + " needs fluid.viscosity > 0");
+    if (s.reference.kind == ReferenceKind::Couette)
+      s.reference.velocity = r.number(r.required(rf, "reference", "velocity"), "reference.velocity",
+                                      "the speed along x of the wall at y = origin + length (m/s)");
+    else if (rf["velocity"])
+      r.fail(rf["velocity"], "reference.velocity", "only a couette reference takes a wall velocity");
+  }
+}
+
+}  // namespace ondine::case_file

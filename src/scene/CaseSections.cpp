@@ -1,0 +1,243 @@
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <unistd.h>
+
+#include "scene/CaseSections.hpp"
+
+namespace ondine::case_file {
+
+namespace {
+
+KernelType kernel_of(const std::string& s) {
+  if (s == "quartic_spline") return KernelType::QuarticSpline;
+  if (s == "cubic_spline") return KernelType::CubicSpline;
+  return KernelType::WendlandC2;
+}
+
+// Bytes per particle of the largest scheme (fields + RK4 stage copies + neighbour
+// cells), a deliberately generous bound for the memory check.
+constexpr double bytes_per_particle(int dim) { return 8.0 * (6.0 * dim + 12.0) + 64.0; }
+
+}  // namespace
+
+void read_name_and_dimension(const Reader& r, YAML::Node& root, const std::string& path, Scene& s) {
+  if (root["name"]) {
+    s.name = r.text(root["name"], "name", "a case name");
+    if (s.name.find_first_of("/\\ ") != std::string::npos)
+      r.fail(root["name"], "name", "expected a name without spaces or slashes");
+  } else {
+    const auto slash = path.find_last_of('/');
+    std::string stem = path.substr(slash == std::string::npos ? 0 : slash + 1);
+    s.name = stem.substr(0, stem.rfind('.'));
+  }
+  s.dimension = static_cast<int>(r.integer(r.required(root, "", "dimension"), "dimension", 2, 3));
+}
+
+void read_domain(const Reader& r, YAML::Node& root, Scene& s) {
+  const int D = s.dimension;
+  const YAML::Node dom = r.required(root, "", "domain");
+  r.only_keys(dom, "domain", {"min", "max", "periodic"});
+  s.domain.min = r.vector(r.required(dom, "domain", "min"), "domain.min", D, " (m)");
+  s.domain.max = r.vector(r.required(dom, "domain", "max"), "domain.max", D, " (m)");
+  for (int k = 0; k < D; ++k)
+    if (!(s.domain.max[k] > s.domain.min[k]))
+      r.fail(dom["max"], "domain.max", "expected domain.max > domain.min in every axis");
+  if (dom["periodic"]) s.periodic = r.flags(dom["periodic"], "domain.periodic", D);
+}
+
+void read_discretisation(const Reader& r, YAML::Node& root, Scene& s) {
+  const int D = s.dimension;
+  const YAML::Node dom = root["domain"];
+  const YAML::Node disc = r.required(root, "", "discretisation");
+  r.only_keys(disc, "discretisation", {"dx", "kernel", "R_over_dx", "reorder_interval", "neighbour_skin",
+                                       "wall_quadrature_spacing"});
+  s.dx = r.positive(r.required(disc, "discretisation", "dx"), "discretisation.dx", " (m)");
+  if (disc["kernel"])
+    s.kernel = kernel_of(r.word(disc["kernel"], "discretisation.kernel", {"wendland_c2", "quartic_spline", "cubic_spline"}));
+  if (disc["R_over_dx"]) {
+    s.R_over_dx = r.positive(disc["R_over_dx"], "discretisation.R_over_dx", "");
+    if (s.R_over_dx < 1.5 || s.R_over_dx > 6)
+      r.fail(disc["R_over_dx"], "discretisation.R_over_dx", "expected a value in [1.5, 6] (the thesis uses 2.5 to 4)");
+  }
+  if (disc["reorder_interval"])
+    s.reorder_interval = static_cast<int>(r.integer(disc["reorder_interval"], "discretisation.reorder_interval", 0, 1000000));
+  if (disc["wall_quadrature_spacing"])
+    s.wall_quadrature_spacing = r.positive(disc["wall_quadrature_spacing"], "discretisation.wall_quadrature_spacing", " (m)");
+  if (disc["neighbour_skin"]) s.neighbour_skin = r.non_negative(disc["neighbour_skin"], "discretisation.neighbour_skin", " (in dx)");
+  for (int k = 0; k < D; ++k) {
+    if (!s.periodic[k]) continue;
+    const double L = s.domain.max[k] - s.domain.min[k];
+    const double cut = s.R() + s.neighbour_skin * s.dx;
+    if (L < 2 * cut)
+      r.fail(dom["max"], "domain.max", "a periodic axis must be at least 2 (R + skin) = " + std::to_string(2 * cut) + " m long");
+    if (std::abs(L / s.dx - std::round(L / s.dx)) > 1e-6 * (L / s.dx))
+      r.fail(disc["dx"], "discretisation.dx", "expected a spacing that divides the periodic length " + std::to_string(L) +
+                                                 " m of axis " + std::to_string(k) + " (a gap would open at the seam)");
+  }
+}
+
+void read_fluid(const Reader& r, YAML::Node& root, Scene& s) {
+  const YAML::Node fl = r.required(root, "", "fluid");
+  r.only_keys(fl, "fluid", {"rho0", "sound_speed", "mach", "reference_velocity", "viscosity", "eos"});
+  s.rho0 = r.positive(r.required(fl, "fluid", "rho0"), "fluid.rho0", " (kg/m^3)");
+  if (fl["viscosity"]) s.nu = r.non_negative(fl["viscosity"], "fluid.viscosity", " (m^2/s)");
+  if (fl["mach"]) {
+    s.mach = r.positive(fl["mach"], "fluid.mach", "");
+    if (s.mach > 0.3) r.fail(fl["mach"], "fluid.mach", "expected a Mach number <= 0.3 (weak compressibility, thesis 2.33-2.35)");
+  }
+  if (const YAML::Node e = fl["eos"]) {
+    r.only_keys(e, "fluid.eos", {"law", "gamma", "background_pressure"});
+    s.eos = r.word(r.required(e, "fluid.eos", "law"), "fluid.eos.law", {"tait", "linear"}) == "tait" ? EosLaw::Tait : EosLaw::Linear;
+    if (e["gamma"]) s.tait_gamma = r.positive(e["gamma"], "fluid.eos.gamma", "");
+    if (e["background_pressure"]) s.eos_background_pressure = r.non_negative(e["background_pressure"], "fluid.eos.background_pressure", " (Pa)");
+  }
+}
+
+void read_forces(const Reader& r, YAML::Node& root, Scene& s) {
+  const int D = s.dimension;
+  if (const YAML::Node f = root["forces"]) {
+    r.only_keys(f, "forces", {"gravity", "body_force"});
+    if (f["gravity"]) s.gravity = r.vector(f["gravity"], "forces.gravity", D, " (m/s^2)");
+    if (f["body_force"]) s.body_force = r.vector(f["body_force"], "forces.body_force", D, " (m/s^2)");
+  }
+}
+
+void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
+  const int D = s.dimension;
+  if (const YAML::Node sc = root["scheme"]) {
+    r.only_keys(sc, "scheme", {"viscous_term", "delta_sph", "artificial_viscosity", "background_pressure",
+                               "time_integrator", "cfl", "shifting", "consistent_laplacian",
+                               "wall_velocity_reconstruction", "renormalised_continuity"});
+    if (sc["renormalised_continuity"])
+      s.renormalised_continuity = r.boolean(sc["renormalised_continuity"], "scheme.renormalised_continuity");
+    if (sc["wall_velocity_reconstruction"])
+      s.wall_velocity_reconstruction = r.boolean(sc["wall_velocity_reconstruction"], "scheme.wall_velocity_reconstruction");
+    if (sc["viscous_term"]) {
+      const std::string w = r.word(sc["viscous_term"], "scheme.viscous_term", {"none", "morris", "monaghan_gingold"});
+      s.viscous_term = w == "morris" ? ViscousTerm::Morris : w == "monaghan_gingold" ? ViscousTerm::MonaghanGingold : ViscousTerm::None;
+    }
+    if (sc["delta_sph"]) {
+      s.delta_sph = r.non_negative(sc["delta_sph"], "scheme.delta_sph", "");
+      if (s.delta_sph >= 0.2) r.fail(sc["delta_sph"], "scheme.delta_sph", "expected 0 <= delta < 0.2 (stability bound of thesis 2.60)");
+    }
+    if (sc["artificial_viscosity"]) s.artificial_viscosity = r.non_negative(sc["artificial_viscosity"], "scheme.artificial_viscosity", " (alpha)");
+    if (sc["consistent_laplacian"]) s.consistent_laplacian = r.boolean(sc["consistent_laplacian"], "scheme.consistent_laplacian");
+    if (sc["background_pressure"]) s.background_pressure = r.boolean(sc["background_pressure"], "scheme.background_pressure");
+    if (sc["shifting"]) {
+      s.shifting = r.boolean(sc["shifting"], "scheme.shifting");
+      bool all_periodic = true;
+      for (int k = 0; k < D; ++k) all_periodic = all_periodic && s.periodic[k];
+      if (s.shifting && (!all_periodic || root["walls"]))
+        r.fail(sc["shifting"], "scheme.shifting", "particle shifting is for flows without a free surface or wall; it needs every axis periodic and no walls (the free-surface treatment of shifting is not built yet)");
+    }
+    if (sc["time_integrator"])
+      s.integrator = r.word(sc["time_integrator"], "scheme.time_integrator", {"rk4", "predictor_corrector"}) == "rk4"
+                         ? TimeIntegrator::RK4 : TimeIntegrator::PredictorCorrector;
+    if (const YAML::Node c = sc["cfl"]) {
+      r.only_keys(c, "scheme.cfl", {"acoustic", "viscous", "force"});
+      if (c["acoustic"]) s.cfl_acoustic = r.positive(c["acoustic"], "scheme.cfl.acoustic", "");
+      if (c["viscous"]) s.cfl_viscous = r.positive(c["viscous"], "scheme.cfl.viscous", "");
+      if (c["force"]) s.cfl_force = r.positive(c["force"], "scheme.cfl.force", "");
+    }
+  }
+}
+
+// scheme.viscous_term and fluid.viscosity agree
+void check_viscosity(const Reader& r, YAML::Node& root, const Scene& s) {
+  const YAML::Node fl = root["fluid"];
+  if (s.viscous_term != ViscousTerm::None && !(s.nu > 0))
+    r.fail(fl, "fluid.viscosity", "scheme.viscous_term is set, so fluid.viscosity must be > 0");
+  if (s.viscous_term == ViscousTerm::None && s.nu > 0)
+    r.fail(fl["viscosity"], "fluid.viscosity", "is > 0 but scheme.viscous_term is none; choose morris or monaghan_gingold");
+}
+
+// sound speed: a number, or auto = reference_velocity / mach
+void read_sound_speed(const Reader& r, YAML::Node& root, Scene& s) {
+  const int D = s.dimension;
+  const YAML::Node fl = root["fluid"];
+  double u_ref = -1;
+  if (const YAML::Node u = fl["reference_velocity"]) {
+    if (!(u.IsScalar() && u.Scalar() == "auto")) u_ref = r.positive(u, "fluid.reference_velocity", " (m/s) or auto");
+  }
+  if (u_ref < 0) {
+    // auto: the largest of the initial speeds and the free-fall speed sqrt(2 |g| H) over the fluid height
+    double g = 0, h = 0, u0 = 0;
+    for (int k = 0; k < D; ++k) g += (s.gravity[k] + s.body_force[k]) * (s.gravity[k] + s.body_force[k]);
+    g = std::sqrt(g);
+    for (const FluidBlock& b : s.blocks) {
+      // height of the block along gravity
+      double hb = 0;
+      for (int k = 0; k < D && g > 0; ++k) hb += std::abs(s.gravity[k] + s.body_force[k]) / g * (b.box.max[k] - b.box.min[k]);
+      h = std::max(h, hb);
+      double v2 = 0;
+      for (int k = 0; k < D; ++k) v2 += b.velocity[k] * b.velocity[k];
+      u0 = std::max({u0, std::sqrt(v2), b.tg_amplitude});
+    }
+    u_ref = std::max(u0, std::sqrt(2.0 * g * h));
+  }
+  s.reference_velocity = u_ref;
+  const YAML::Node cs = fl["sound_speed"];
+  if (cs && !(cs.IsScalar() && cs.Scalar() == "auto")) {
+    s.c0 = r.positive(cs, "fluid.sound_speed", " (m/s) or auto");
+  } else {
+    if (!(u_ref > 0))
+      r.fail(fl, "fluid.sound_speed", "is auto but the case has no velocity scale (no gravity, no initial velocity); give fluid.reference_velocity or a number");
+    s.c0 = u_ref / s.mach;
+  }
+}
+
+void read_time(const Reader& r, YAML::Node& root, Scene& s) {
+  const YAML::Node t = r.required(root, "", "time");
+  r.only_keys(t, "time", {"duration", "output_interval", "max_steps", "damping"});
+  s.duration = r.positive(r.required(t, "time", "duration"), "time.duration", " (s)");
+  s.output_interval = r.positive(r.required(t, "time", "output_interval"), "time.output_interval", " (s)");
+  if (t["damping"]) s.damping_time = r.non_negative(t["damping"], "time.damping", " (s)");
+  if (t["max_steps"]) s.max_steps = r.integer(t["max_steps"], "time.max_steps", 1, 1LL << 50);
+}
+
+// distributed runs (docs/parallel.md)
+void read_parallel(const Reader& r, YAML::Node& root, Scene& s) {
+  if (const YAML::Node par = root["parallel"]) {
+    r.only_keys(par, "parallel", {"rebalance_threshold", "weight"});
+    if (par["weight"]) s.balance_by_pairs = r.word(par["weight"], "parallel.weight", {"pairs", "particles"}) == "pairs";
+    if (par["rebalance_threshold"]) {
+      s.rebalance_threshold = r.positive(par["rebalance_threshold"], "parallel.rebalance_threshold", "");
+      if (s.rebalance_threshold > 1)
+        r.fail(par["rebalance_threshold"], "parallel.rebalance_threshold", "expected a value in (0, 1] (tau = min work / max work)");
+    }
+  }
+}
+
+// checkpoints (docs/parallel.md)
+void read_checkpoint(const Reader& r, YAML::Node& root, Scene& s) {
+  if (const YAML::Node cp = root["checkpoint"]) {
+    r.only_keys(cp, "checkpoint", {"every_steps", "every_wall_seconds"});
+    if (cp["every_steps"]) s.checkpoint_every_steps = r.integer(cp["every_steps"], "checkpoint.every_steps", 0, 1LL << 50);
+    if (cp["every_wall_seconds"])
+      s.checkpoint_every_wall_seconds = r.non_negative(cp["every_wall_seconds"], "checkpoint.every_wall_seconds", " (s)");
+  }
+}
+
+// memory: refuse a particle count that cannot fit before anything is allocated
+void check_memory(const Reader& r, YAML::Node& root, const Scene& s) {
+  const int D = s.dimension;
+  const YAML::Node disc = root["discretisation"];
+  double n = 0;
+  for (const FluidBlock& b : s.blocks) {
+    double c = 1;
+    for (int k = 0; k < D; ++k) c *= std::round((b.box.max[k] - b.box.min[k]) / s.dx);
+    n += c;
+  }
+  const double mem = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  if (n * bytes_per_particle(D) > 0.8 * mem || n > 2147483647.0) {
+    std::ostringstream m;
+    m.precision(3);
+    m << "the fluid blocks need " << n << " particles (about " << n * bytes_per_particle(D) / 1073741824.0
+      << " GiB), more than 80% of this machine's " << mem / 1073741824.0
+      << " GiB or than 2^31 - 1 particles per rank; expected a larger dx";
+    r.fail(disc["dx"], "discretisation.dx", m.str());
+  }
+}
+
+}  // namespace ondine::case_file

@@ -1,0 +1,45 @@
+#pragma once
+// Internal to the case-file parser (src/scene/Case*.cpp); nothing outside src/scene
+// includes it. One reader per section of the case file (docs/case-file.md), each
+// filling its part of the scene and refusing what cannot run. parse_case
+// (CaseFile.cpp) calls them in a fixed order, which decides the error a file with
+// several faults gets first; later sections may check against earlier ones.
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+
+#include "scene/CaseReader.hpp"
+#include "scene/Scene.hpp"
+
+namespace ondine::case_file {
+
+// CaseSections.cpp: the settings
+void read_name_and_dimension(const Reader& r, YAML::Node& root, const std::string& path, Scene& s);
+void read_domain(const Reader& r, YAML::Node& root, Scene& s);
+void read_discretisation(const Reader& r, YAML::Node& root, Scene& s);
+void read_fluid(const Reader& r, YAML::Node& root, Scene& s);
+void read_forces(const Reader& r, YAML::Node& root, Scene& s);
+void read_scheme(const Reader& r, YAML::Node& root, Scene& s);
+void check_viscosity(const Reader& r, YAML::Node& root, const Scene& s);
+void read_sound_speed(const Reader& r, YAML::Node& root, Scene& s);
+void read_time(const Reader& r, YAML::Node& root, Scene& s);
+void read_parallel(const Reader& r, YAML::Node& root, Scene& s);
+void read_checkpoint(const Reader& r, YAML::Node& root, Scene& s);
+void check_memory(const Reader& r, YAML::Node& root, const Scene& s);
+
+// CaseFluidBlocks.cpp: the initial fluid
+void read_fluid_blocks(const Reader& r, YAML::Node& root, Scene& s);
+
+// CaseWalls.cpp: NFM walls (and the kernel they need); `path` is the case file's,
+// which wall files are relative to
+void read_walls(const Reader& r, YAML::Node& root, const std::string& path, Scene& s);
+
+// CaseObservers.cpp: what a run measures and compares with
+void read_probes(const Reader& r, YAML::Node& root, Scene& s);
+void read_wave_gauges(const Reader& r, YAML::Node& root, Scene& s);
+void read_reference(const Reader& r, YAML::Node& root, Scene& s);
+
+// CaseRefinement.cpp: adaptive particle refinement zones
+void read_refinement(const Reader& r, YAML::Node& root, Scene& s);
+
+}  // namespace ondine::case_file

@@ -1,0 +1,133 @@
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "scene/CaseSections.hpp"
+
+namespace ondine::case_file {
+
+namespace {
+
+// A CSV of "x, y" lines (also ';', tabs or spaces; '#' comments, blank lines skipped)
+void read_wall_file(const Reader& r, const YAML::Node& f, const std::string& key, const std::string& path, Wall& wall) {
+  const std::string rel = r.text(f, key + ".file", "a CSV file of x, y lines");
+  const auto slash = path.find_last_of('/');
+  const std::string file = (!rel.empty() && rel[0] == '/') || slash == std::string::npos ? rel : path.substr(0, slash + 1) + rel;
+  std::ifstream in(file);
+  if (!in) r.fail(f, key + ".file", "cannot open '" + file + "'");
+  std::string line;
+  for (int ln = 1; std::getline(in, line); ++ln) {
+    const auto hash = line.find('#');
+    if (hash != std::string::npos) line.erase(hash);
+    for (char& c : line) if (c == ',' || c == ';' || c == '\t') c = ' ';
+    std::istringstream ls(line);
+    double x, y;
+    std::string rest;
+    if (!(ls >> x)) {
+      if (line.find_first_not_of(' ') == std::string::npos) continue;  // blank line
+      throw CaseError(file + ":" + std::to_string(ln) + ": expected two numbers 'x, y' (m), got '" + line + "'");
+    }
+    if (!(ls >> y) || (ls >> rest) || !std::isfinite(x) || !std::isfinite(y))
+      throw CaseError(file + ":" + std::to_string(ln) + ": expected two numbers 'x, y' (m), got '" + line + "'");
+    wall.points.push_back({x, y});
+  }
+}
+
+// the polyline: points, or a file of points
+void read_wall_points(const Reader& r, const YAML::Node& w, const std::string& key, const std::string& path, Wall& wall) {
+  if (w["points"] && w["file"]) r.fail(w["file"], key + ".file", "give either points or file, not both");
+  if (const YAML::Node pts = w["points"]) {
+    if (!pts.IsSequence()) r.fail(pts, key + ".points", "expected a list of [x, y] points");
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+      const Vec3 v = r.vector(pts[k], key + ".points[" + std::to_string(k) + "]", 2, " (m)");
+      wall.points.push_back({v[0], v[1]});
+    }
+  } else if (const YAML::Node f = w["file"]) {
+    read_wall_file(r, f, key, path, wall);
+  } else {
+    r.fail(w, key + ".points", "required: points (a list of [x, y]) or file (a CSV of x, y lines)");
+  }
+}
+
+// enough points, no zero-length segment, within one period along a periodic axis
+void check_wall_shape(const Reader& r, const YAML::Node& w, const std::string& key, const Scene& s, const Wall& wall) {
+  const std::size_t need = wall.closed ? 3 : 2;
+  if (wall.points.size() < need)
+    r.fail(w, key + ".points", "expected at least " + std::to_string(need) + " points for a" + (wall.closed ? " closed" : "n open") + " wall");
+  const std::size_t nseg = wall.closed ? wall.points.size() : wall.points.size() - 1;
+  for (std::size_t k = 0; k < nseg; ++k) {
+    const auto& a = wall.points[k];
+    const auto& b = wall.points[(k + 1) % wall.points.size()];
+    if (std::hypot(b[0] - a[0], b[1] - a[1]) < 1e-9 * s.dx)
+      r.fail(w["points"] ? w["points"] : w, key + ".points", "segment " + std::to_string(k) + " has zero length (repeated point)");
+  }
+  // along a periodic axis the wall's images one period away are added, so the wall
+  // itself must lie within one period: a wall across the axis spans exactly one
+  for (int k = 0; k < 2; ++k) {
+    if (!s.periodic[k]) continue;
+    const double tol = 1e-9 * (s.domain.max[k] - s.domain.min[k]);
+    for (const auto& pt : wall.points)
+      if (pt[k] < s.domain.min[k] - tol || pt[k] > s.domain.max[k] + tol)
+        r.fail(w["points"] ? w["points"] : w, key + ".points",
+               std::string("a wall must lie within the domain along the periodic axis ") + "xyz"[k] +
+                   " (its periodic images are added; a wall across the axis spans exactly one period)");
+  }
+}
+
+void read_wall_motion(const Reader& r, const YAML::Node& m, const std::string& key, int D, Wall& wall) {
+  const std::string mk = key + ".motion";
+  r.only_keys(m, mk, {"type", "velocity", "amplitude", "period"});
+  const std::string type = r.word(r.required(m, mk, "type"), mk + ".type", {"fixed", "sliding", "translation", "oscillation"});
+  if (type == "sliding" || type == "translation") {
+    wall.motion = type == "sliding" ? WallMotion::Sliding : WallMotion::Translation;
+    wall.velocity = r.vector(r.required(m, mk, "velocity"), mk + ".velocity", D, " (m/s)");
+  } else if (type == "oscillation") {
+    wall.motion = WallMotion::Oscillation;
+    wall.amplitude = r.vector(r.required(m, mk, "amplitude"), mk + ".amplitude", D, " (m)");
+    wall.period = r.positive(r.required(m, mk, "period"), mk + ".period", " (s)");
+  }
+}
+
+// one entry of walls, checked against the walls before it
+Wall read_wall(const Reader& r, const YAML::Node& w, std::size_t i, const std::string& path, const Scene& s) {
+  const std::string key = "walls[" + std::to_string(i) + "]";
+  r.only_keys(w, key, {"name", "points", "file", "closed", "fluid_side", "condition", "motion"});
+  Wall wall;
+  wall.name = w["name"] ? r.text(w["name"], key + ".name", "a wall name") : "wall" + std::to_string(i);
+  if (wall.name.find_first_of(", \"") != std::string::npos)
+    r.fail(w["name"], key + ".name", "expected a name without commas, spaces or quotes (it heads CSV columns)");
+  for (const Wall& o : s.walls)
+    if (o.name == wall.name) r.fail(w["name"] ? w["name"] : w, key + ".name", "duplicate wall name '" + wall.name + "'");
+  read_wall_points(r, w, key, path, wall);
+  if (w["closed"]) wall.closed = r.boolean(w["closed"], key + ".closed");
+  check_wall_shape(r, w, key, s, wall);
+  if (w["fluid_side"]) {
+    const std::string side = wall.closed ? r.word(w["fluid_side"], key + ".fluid_side", {"inside", "outside"})
+                                         : r.word(w["fluid_side"], key + ".fluid_side", {"left", "right"});
+    wall.fluid_inside = side == "inside" || side == "left";
+  } else {
+    r.fail(w, key + ".fluid_side", wall.closed ? "required for a closed wall: inside (a tank) or outside (a body)"
+                                               : "required for an open wall: left or right of the direction of its points");
+  }
+  if (w["condition"])
+    wall.condition = r.word(w["condition"], key + ".condition", {"no_slip", "slip"}) == "slip" ? WallCondition::Slip : WallCondition::NoSlip;
+  if (const YAML::Node m = w["motion"]) read_wall_motion(r, m, key, s.dimension, wall);
+  return wall;
+}
+
+}  // namespace
+
+// walls (NFM, 2D polylines)
+void read_walls(const Reader& r, YAML::Node& root, const std::string& path, Scene& s) {
+  const int D = s.dimension;
+  if (const YAML::Node ws = root["walls"]) {
+    if (!ws.IsSequence()) r.fail(ws, "walls", "expected a list of walls");
+    if (D != 2 && ws.size() > 0) r.fail(ws, "walls", "NFM walls are implemented in 2D only so far");
+    for (std::size_t i = 0; i < ws.size(); ++i) s.walls.push_back(read_wall(r, ws[i], i, path, s));
+  }
+  const YAML::Node disc = root["discretisation"];
+  if (!s.walls.empty() && s.kernel != KernelType::WendlandC2)
+    r.fail(disc["kernel"], "discretisation.kernel", "NFM walls need wendland_c2: the analytical Shepard factor (thesis 4.55) is Wendland's");
+}
+
+}  // namespace ondine::case_file
