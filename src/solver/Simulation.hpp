@@ -18,6 +18,7 @@
 #include "kernels/ConsistentLaplacian.hpp"
 #include "kernels/FluxArgs.hpp"
 #include "kernels/WallFluxPass.hpp"
+#include "solver/Scheme.hpp"
 #include "kernels/Integrator.hpp"
 #include "kernels/NeighbourList.hpp"
 #include "kernels/OrbLookup.hpp"
@@ -124,7 +125,7 @@ class Simulation {
   std::int64_t pair_count() const;            // pairs within R (both ways) at the last list build
   std::int64_t neighbour_builds() const { return domain_.builds(); }
   // lattice quadrature factor of the Morris Laplacian (kernels/MorrisLatticeFactor.hpp); 1 without it
-  double morris_factor() const { return morris_factor_; }
+  double morris_factor() const { return scheme_.morris_factor; }
   // the levels of the evaluation (one without refinement zones)
   std::vector<LevelSpan<D>> levels() const;
   double R() const { return R_; }
@@ -196,6 +197,8 @@ class Simulation {
   WallEos wall_eos() const;
   FluxArgs<D> state_flux_args(int n);
   double background_pressure_min(const field_view_t<field::Pressure, D>& P, int n) const;
+  // the named context of a pass over a level's SPH particles (Scheme.hpp)
+  PassContext<D> pass_context(const LevelSpan<D>& level) const;
   // stepping (solver/SimulationStep.hpp)
   double time_step() const;
   void stage_update(double c_dt, double acc_weight, bool first);
@@ -210,9 +213,7 @@ class Simulation {
   int n_own_ = 0;
   std::int64_t lattice_first_ = 0;
   double R_, skin_len_ = 0;
-  double morris_factor_ = 1.0;  // kappa of kernels/MorrisLatticeFactor.hpp (Morris viscosity only)
-  FluxFunction<D> flux_ = nullptr;
-  WallFluxFunction<D> wall_flux_ = nullptr;  // with walls (WallFluxDispatch.hpp)
+  CompiledScheme<D> scheme_;  // every kernel-dependent pass, chosen once (Scheme.hpp)
   WallModel<D> walls_;
   LaplacianWeightView<D> laplacian_weights_;  // scratch of evaluate() (kernels/ConsistentLaplacian.hpp)
   FluidRegion<D> region_;

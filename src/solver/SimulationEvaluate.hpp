@@ -9,11 +9,8 @@
 //   (WallFluxDispatch: the wall terms 4.22, 4.25, 4.85 folded by the generic wall loop),
 //   the renormalised continuity (4.86).
 // Included by SimulationImpl.hpp only.
-#include "kernels/DensityGradientPass.hpp"
 #include "kernels/EquationOfState.hpp"
-#include "kernels/RenormalisedContinuity.hpp"
 #include "kernels/apr/LevelSums.hpp"
-#include "solver/FluxSelect.hpp"
 #include "solver/KernelDispatch.hpp"
 #include "solver/Simulation.hpp"
 
@@ -55,7 +52,7 @@ FluxArgs<D> Simulation<D>::state_flux_args(int n) {
   a.du = p_.get(field::Acceleration{});
   a.drho = p_.get(field::DensityRate{});
   // the lattice factor scales the plain Morris term; the consistent one has its own weights
-  a.nu = scene_.viscous_term == ViscousTerm::Morris && !uses_consistent_laplacian(scene_) ? scene_.nu * morris_factor_ : scene_.nu;
+  a.nu = scene_.viscous_term == ViscousTerm::Morris && !uses_consistent_laplacian(scene_) ? scene_.nu * scheme_.morris_factor : scene_.nu;
   if (consistent_laplacian()) {
     if (static_cast<int>(laplacian_weights_.extent(0)) < n)
       laplacian_weights_ = LaplacianWeightView<D>("ondine::NFM::laplacian_weights", n + n / 8 + 16);
@@ -72,6 +69,46 @@ double Simulation<D>::background_pressure_min(const field_view_t<field::Pressure
                           Kokkos::Min<double>(pmin));
   pmin = comm().min(pmin);
   return pmin < 0 ? -pmin : 0.0;
+}
+
+template <int D>
+PassContext<D> Simulation<D>::pass_context(const LevelSpan<D>& L) const {
+  PassContext<D> c;
+  c.first = L.first;
+  c.end = L.active_end;
+  c.R = L.R;
+  c.dx = L.dx;
+  c.list = L.list;
+  c.cells = domain_.cells();
+  c.wall_cells = L.wall_cells;
+  c.box = domain_.box();
+  auto take = [&](auto& view, auto tag) {
+    if (p_.has(tag)) view = p_.get(tag);
+  };
+  take(c.x, field::Position{});
+  take(c.u, field::Velocity{});
+  take(c.rho, field::Density{});
+  take(c.P, field::Pressure{});
+  take(c.m, field::Mass{});
+  take(c.grad_rho, field::DensityGradient{});
+  take(c.gamma, field::ShepardGamma{});
+  take(c.drho, field::DensityRate{});
+  take(c.free_surface, field::FreeSurface{});
+  c.wall = walls_.points();
+  c.segments = walls_.segments();
+  c.weights = laplacian_weights_;
+  c.eos = wall_eos();
+  c.nu = scene_.nu;
+  c.rho0 = scene_.rho0;
+  c.morris_factor = scheme_.morris_factor;
+  c.velocity_muscl = scene_.wall_velocity_reconstruction;
+  if (apr_on_) {
+    c.zones = apr_.zones();
+    take(c.birth, field::AprBirthLevel{});
+    take(c.guard, field::AprGuard{});
+    take(c.mother, field::AprMother{});
+  }
+  return c;
 }
 
 template <int D>
@@ -94,7 +131,6 @@ void Simulation<D>::evaluate() {
   // the density gradient feeds delta-SPH and the MUSCL wall state (4.30); next to no-slip
   // walls its pass also solves the consistent Laplacian's weights
   const bool gradient = scene_.delta_sph > 0 || walls;
-  const bool morris_walls = consistent_laplacian();
   if (gradient) a.grad_rho = p_.get(field::DensityGradient{});
   const std::vector<LevelSpan<D>> levels = this->levels();
   for (const LevelSpan<D>& L : levels) {
@@ -102,17 +138,7 @@ void Simulation<D>::evaluate() {
     const auto range = Kokkos::RangePolicy<ExecSpace>(L.first, L.active_end);
     if (walls)
       Kokkos::parallel_for("ondine::NFM::shepard_gamma", range, ShepardGammaPass<D>{walls_.segments(), L.R, domain_.box(), a.x, gamma});
-    if (gradient)
-      with_kernel<D>(scene_.kernel, L.R, [&](auto W) {
-        if (morris_walls)
-          Kokkos::parallel_for("ondine::DensityGradient+consistent_laplacian", range,
-                               DensityGradientPass<D, decltype(W), true>{
-                                   L.list, domain_.box(), W, L.R * L.R, a.x, a.rho, a.m, a.grad_rho,
-                                   {walls_.points(), L.wall_cells, 0.05 * L.R, morris_factor_, gamma, laplacian_weights_}});
-        else
-          Kokkos::parallel_for("ondine::DensityGradient", range,
-                               DensityGradientPass<D, decltype(W)>{L.list, domain_.box(), W, L.R * L.R, a.x, a.rho, a.m, a.grad_rho});
-      });
+    if (gradient) scheme_.density_gradient(pass_context(L));
   }
   // with zones the guards' density gradient came with their interpolation (GuardInterpolation.hpp)
   if (gradient) domain_.refresh(p_, field::DensityGradient{});
@@ -125,24 +151,12 @@ void Simulation<D>::evaluate() {
     a.R = L.R;
     a.delta_coeff = scene_.delta_sph * scene_.c0 * L.R;
     a.av_alpha_R_c0 = scene_.artificial_viscosity * L.R * scene_.c0;
-    flux_(a);
-    const auto range = Kokkos::RangePolicy<ExecSpace>(L.first, L.active_end);
+    scheme_.flux(a);
     if (walls)
-      wall_flux_(WallFluxArgs<D>{a, walls_.points(), L.wall_cells, gamma, laplacian_weights_, weos, scene_.nu, 0.5 * L.dx,
+      scheme_.wall_flux(WallFluxArgs<D>{a, walls_.points(), L.wall_cells, gamma, laplacian_weights_, weos, scene_.nu, 0.5 * L.dx,
                                  scene_.wall_velocity_reconstruction});
-    if (scene_.renormalised_continuity)
-      // replaces the plain divergence of (4.23)/(4.25) by the renormalised one (kernels/RenormalisedContinuity.hpp)
-      with_kernel<D>(scene_.kernel, L.R, [&](auto W) {
-        using K = decltype(W);
-        if (walls)
-          Kokkos::parallel_for("ondine::RenormalisedContinuity", range,
-                               RenormalisedContinuity<D, K, true>{L.list, domain_.box(), W, L.R * L.R, walls_.points(), L.wall_cells,
-                                                                  a.x, a.u, a.rho, a.m, gamma, a.drho});
-        else
-          Kokkos::parallel_for("ondine::RenormalisedContinuity", range,
-                               RenormalisedContinuity<D, K, false>{L.list, domain_.box(), W, L.R * L.R, {}, {}, a.x, a.u, a.rho, a.m, {},
-                                                                   a.drho});
-      });
+    // replaces the plain divergence of (4.23)/(4.25) by the renormalised one (kernels/RenormalisedContinuity.hpp)
+    if (scene_.renormalised_continuity) scheme_.renormalised_continuity(pass_context(L));
   }
 }
 

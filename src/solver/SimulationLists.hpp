@@ -235,27 +235,18 @@ long Simulation<D>::space_guards() {
   const bool walls = !walls_.empty();
   if (walls && level_wall_cells_.empty()) build_level_wall_cells();
   const auto x = p_.get(field::Position{});
+  const std::vector<LevelSpan<D>> spans = levels();
   for (int l = mothers ? 0 : 1; l < apr_.levels(); ++l) {
     const int b = apr_.active_end(l), e = apr_.end(l);
     if (e == b) continue;
-    const double Rl = apr_.R(l), dxl = apr_.dx(l);
+    const double Rl = apr_.R(l);
     if (walls && daughters && l > 0)
       Kokkos::parallel_for("ondine::NFM::ShepardGamma", Kokkos::RangePolicy<ExecSpace>(b, e),
                            ShepardGammaPass<D>{walls_.segments(), Rl, domain_.box(), x, p_.get(field::ShepardGamma{})});
-    long moved = 0;
-    with_kernel<D>(scene_.kernel, 1.0, [&](auto W1) {
-      auto run = [&](auto f) { Kokkos::parallel_reduce("ondine::APR::GuardSpacing", Kokkos::RangePolicy<ExecSpace>(b, e), f, moved); };
-      if (walls)
-        run(apr::GuardSpacing<D, decltype(W1), true>{domain_.cells(), domain_.box(), apr_.zones(), W1, Rl, dxl, walls_.segments(), walls_.points(),
-                                                     wall_cells(l), x, p_.get(field::Density{}), p_.get(field::Mass{}),
-                                                     p_.get(field::AprBirthLevel{}), p_.get(field::AprMother{}),
-                                                     p_.get(field::ShepardGamma{}), guard_shift_, daughters, mothers});
-      else
-        run(apr::GuardSpacing<D, decltype(W1), false>{domain_.cells(), domain_.box(), apr_.zones(), W1, Rl, dxl, walls_.segments(), walls_.points(),
-                                                      wall_cells(0), x, p_.get(field::Density{}), p_.get(field::Mass{}),
-                                                      p_.get(field::AprBirthLevel{}), p_.get(field::AprMother{}),
-                                                      field_view_t<field::ShepardGamma, D>(), guard_shift_, daughters, mothers});
-    });
+    PassContext<D> c = pass_context(spans[l]);
+    c.first = b;  // the level's guards
+    c.end = e;
+    const long moved = scheme_.guard_spacing(c, guard_shift_, daughters, mothers);
     if (moved > 0)
       Kokkos::parallel_for("ondine::APR::GuardSpacing::apply", Kokkos::RangePolicy<ExecSpace>(b, e), apr::ApplyShift<D>{domain_.box(), x, guard_shift_});
     total += moved;

@@ -102,45 +102,14 @@ std::vector<ProbeSample> Simulation<D>::sample_probes() const {
 template <int D>
 std::vector<ProbeSample> Simulation<D>::sample_at(const std::vector<Vec3>& points) const {
   std::vector<ProbeSample> out;
-  const int n = n_own_;
-  const auto x = p_.get(field::Position{});
-  const auto u = p_.get(field::Velocity{});
-  const auto rho = p_.get(field::Density{});
-  const auto P = p_.get(field::Pressure{});
-  const auto m = p_.get(field::Mass{});
-  const auto box = domain_.box();
+  PassContext<D> c = pass_context(levels().front());
+  c.end = n_own_;  // every owned particle; with zones, guards are skipped inside
+  c.R = R_;
   for (const Vec3& point : points) {
     Vec<D> xp;
     for (int k = 0; k < D; ++k) xp[k] = point[k];
     // what = 0: the Shepard sum, 1: pressure, 2: density, 3 + k: velocity k
-    std::function<double(int)> sum;
-    if (apr_on_)
-      sum = [&](int what) {
-        double acc = 0;
-        with_kernel<D>(scene_.kernel, 1.0, [&](auto W1) {
-          apr::ProbeSum<D, decltype(W1)> f{apr_.zones(), W1, xp, x, u, rho, P, m, p_.get(field::AprBirthLevel{}),
-                                           p_.get(field::AprGuard{}), what};
-          Kokkos::parallel_reduce("ondine::Probe", Kokkos::RangePolicy<ExecSpace>(0, n), f, acc);
-        });
-        return comm().sum(acc);
-      };
-    else
-      sum = [&](int what) {
-        double acc = 0;
-        with_kernel<D>(scene_.kernel, R_, [&](auto W) {
-          auto reduce = [&](auto value) {
-            Kokkos::parallel_reduce("ondine::Probe", Kokkos::RangePolicy<ExecSpace>(0, n),
-                                    ProbeSum<D, decltype(W), decltype(value)>{box, W, xp, x, rho, m, value}, acc);
-          };
-          using Scalar = probe_value::Scalar<std::decay_t<decltype(rho)>>;
-          using Component = probe_value::Component<std::decay_t<decltype(u)>>;
-          if (what == 0) reduce(probe_value::One{});
-          else if (what == 1) reduce(Scalar{P});
-          else if (what == 2) reduce(Scalar{rho});
-          else reduce(Component{u, what - 3});
-        });
-        return comm().sum(acc);
-      };
+    const auto sum = [&](int what) { return comm().sum(scheme_.probe_sum(c, xp, what)); };
     ProbeSample s;
     s.shepard = sum(0);
     if (s.shepard > 0) {
@@ -160,6 +129,9 @@ std::vector<double> Simulation<D>::wave_elevations() {
   ensure_neighbours();  // the particle cell list is current
   domain_.refresh_state_halos(p_);
   const double step = 0.25 * (apr_on_ ? apr_.dx(apr_.levels() - 1) : scene_.dx);  // a quarter of the finest spacing
+  PassContext<D> c = pass_context(levels().front());
+  c.end = n_own_;
+  c.R = R_;  // with zones the coarsest radius: the cell list's reach
   for (const WaveGauge& g : scene_.wave_gauges) {
     const int ns = static_cast<int>(std::floor((g.top - g.bottom) / step)) + 1;
     Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> pts("ondine::WaveGauge::points", ns);
@@ -172,20 +144,8 @@ std::vector<double> Simulation<D>::wave_elevations() {
       hp(s, D - 1) = z[s];
     }
     Kokkos::deep_copy(pts, hp);
-    if (apr_on_)  // SPH particles only, each with its level's radius (WaveGauge.hpp)
-      with_kernel<D>(scene_.kernel, 1.0, [&](auto W1) {
-        Kokkos::parallel_for("ondine::WaveGauge", Kokkos::RangePolicy<ExecSpace>(0, ns),
-                             GaugeShepardSum<D, decltype(W1), true>{domain_.cells(), domain_.box(), W1, R_ * R_, n_own_, p_.get(field::Position{}),
-                                                                    p_.get(field::Density{}), p_.get(field::Mass{}), pts, sum,
-                                                                    apr_.zones(), p_.get(field::AprBirthLevel{}),
-                                                                    p_.get(field::AprGuard{})});
-      });
-    else
-      with_kernel<D>(scene_.kernel, R_, [&](auto W) {
-        Kokkos::parallel_for("ondine::WaveGauge", Kokkos::RangePolicy<ExecSpace>(0, ns),
-                             GaugeShepardSum<D, decltype(W)>{domain_.cells(), domain_.box(), W, R_ * R_, n_own_, p_.get(field::Position{}),
-                                                             p_.get(field::Density{}), p_.get(field::Mass{}), pts, sum});
-      });
+    // with zones: SPH particles only, each with its level's radius (WaveGauge.hpp)
+    scheme_.gauge_sums(c, pts, sum);
     std::vector<double> shepard(ns);
     Kokkos::deep_copy(Kokkos::View<double*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(shepard.data(), ns), sum);
     comm().sum_in_place(shepard);
@@ -203,27 +163,10 @@ std::vector<WallForce> Simulation<D>::wall_forces() {
   const int nq = walls_.points().count;
   const double nu = scene_.viscous_term != ViscousTerm::None ? scene_.nu : 0.0;
   Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace> traction("ondine::NFM::traction", nq, 2 * D);
-  if (apr_on_)  // each SPH particle with its level's radius (WallForces.hpp)
-    with_kernel<D>(scene_.kernel, 1.0, [&](auto W1) {
-      Kokkos::parallel_for("ondine::NFM::wall_traction", Kokkos::RangePolicy<ExecSpace>(0, nq),
-                           WallTraction<D, decltype(W1), true>{walls_.points(), domain_.cells(), W1, R_ * R_, nu, scene_.rho0,
-                                                               wall_eos(), 0.05 * R_, domain_.box(), p_.get(field::Position{}),
-                                                               p_.get(field::Velocity{}), p_.get(field::Density{}),
-                                                               p_.get(field::Pressure{}), p_.get(field::Mass{}),
-                                                               p_.get(field::DensityGradient{}), traction, apr_.zones(),
-                                                               p_.get(field::AprBirthLevel{}), p_.get(field::AprGuard{}),
-                                                               scene_.wall_velocity_reconstruction});
-    });
-  else
-    with_kernel<D>(scene_.kernel, R_, [&](auto W) {
-      Kokkos::parallel_for("ondine::NFM::wall_traction", Kokkos::RangePolicy<ExecSpace>(0, nq),
-                           WallTraction<D, decltype(W)>{walls_.points(), domain_.cells(), W, R_ * R_, nu, scene_.rho0,
-                                                        wall_eos(), 0.05 * R_, domain_.box(), p_.get(field::Position{}),
-                                                        p_.get(field::Velocity{}), p_.get(field::Density{}),
-                                                        p_.get(field::Pressure{}), p_.get(field::Mass{}),
-                                                        p_.get(field::DensityGradient{}), traction, {}, {}, {},
-                                                        scene_.wall_velocity_reconstruction});
-    });
+  PassContext<D> c = pass_context(levels().front());
+  c.R = R_;  // with zones each SPH particle with its level's radius (WallForces.hpp), R the coarsest
+  c.nu = nu;
+  scheme_.wall_traction(c, traction);
   // several ranks: each wall point is counted by the rank that owns its cell (its
   // support is complete there: owned particles and halos)
   Kokkos::View<int*, MemSpace> counted("ondine::NFM::counted", nq);
@@ -325,20 +268,7 @@ void Simulation<D>::update_free_surface() {
       Kokkos::parallel_for("ondine::NFM::shepard_gamma", Kokkos::RangePolicy<ExecSpace>(L.first, L.end),
                            ShepardGammaPass<D>{walls_.segments(), L.R, domain_.box(), x, p_.get(field::ShepardGamma{})});
     if (!flags) continue;
-    with_kernel<D>(scene_.kernel, L.R, [&](auto W) {
-      using K = decltype(W);
-      const auto range = Kokkos::RangePolicy<ExecSpace>(L.first, L.active_end);
-      if (walls)
-        Kokkos::parallel_for("ondine::FreeSurface", range,
-                             FreeSurfacePass<D, K, true>{L.list, domain_.box(), W, L.R, L.R * L.R, walls_.points(), L.wall_cells, x,
-                                                         p_.get(field::Density{}), p_.get(field::Mass{}),
-                                                         p_.get(field::ShepardGamma{}), p_.get(field::FreeSurface{})});
-      else
-        Kokkos::parallel_for("ondine::FreeSurface", range,
-                             FreeSurfacePass<D, K, false>{L.list, domain_.box(), W, L.R, L.R * L.R, walls_.points(), L.wall_cells, x,
-                                                          p_.get(field::Density{}), p_.get(field::Mass{}),
-                                                          field_view_t<field::ShepardGamma, D>(), p_.get(field::FreeSurface{})});
-    });
+    scheme_.free_surface(pass_context(L));
   }
 }
 

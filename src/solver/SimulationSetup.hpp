@@ -6,12 +6,10 @@
 #include <stdexcept>
 
 #include "kernels/InitialFill.hpp"
-#include "kernels/MorrisLatticeFactor.hpp"
 #include "kernels/StateHash.hpp"
 #include "scene/CaseFile.hpp"
-#include "solver/FluxSelect.hpp"
-#include "solver/WallFluxDispatch.hpp"
 #include "solver/KernelDispatch.hpp"
+#include "solver/SchemePasses.hpp"
 #include "solver/Simulation.hpp"
 
 namespace ondine {
@@ -20,8 +18,7 @@ template <int D>
 Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : scene_(scene) {
   if (scene.dimension != D) throw std::logic_error("Simulation<D>: scene dimension mismatch");
   R_ = scene.R();
-  if (scene.viscous_term == ViscousTerm::Morris)
-    morris_factor_ = with_kernel<D>(scene.kernel, R_, [&](auto W) { return morris_lattice_factor<D>(W, R_, scene.dx); });
+  scheme_ = make_scheme<D>(scene);
   // with refinement zones the skin and the wall quadrature follow the finest spacing
   apr_on_ = !scene.refinement_zones.empty();
   const double dx_finest = scene.dx / std::ldexp(1.0, scene.max_refinement_level());
@@ -53,10 +50,8 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
   bool free_surface_possible = false;
   for (int k = 0; k < D; ++k) free_surface_possible = free_surface_possible || !scene.periodic[k];
   if (free_surface_possible) p_.allocate(field::FreeSurface{});
-  flux_ = with_kernel<D>(scene.kernel, R_, [&](auto W) { return select_flux<D, decltype(W)>(scene); });
   if (walls) {
     walls_ = WallModel<D>(scene_, domain_.box(), R_);
-    wall_flux_ = with_kernel<D>(scene.kernel, R_, [&](auto W) { return select_wall_flux<D, decltype(W)>(scene); });
     build_fluid_region();
   }
   if (restart) {

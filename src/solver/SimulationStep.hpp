@@ -42,14 +42,7 @@ double Simulation<D>::time_step() const {
   // the viscous wall term's stiffness, level by level
   if (!walls_.empty() && scene_.viscous_term != ViscousTerm::None)
     for (const LevelSpan<D>& L : levels) {
-      double kmax = 0;  // 0 on a rank without SPH particles of this level (it takes part in the all-reduce)
-      with_kernel<D>(scene_.kernel, L.R, [&](auto W) {
-        Kokkos::parallel_reduce("ondine::TimeStep::wall_viscous", Kokkos::RangePolicy<ExecSpace>(L.first, L.active_end),
-                                WallViscousStiffness<D, decltype(W)>{walls_.points(), L.wall_cells, W, L.R * L.R, scene_.nu,
-                                                                     0.05 * L.R, domain_.box(), p_.get(field::Position{}),
-                                                                     p_.get(field::ShepardGamma{})},
-                                Kokkos::Max<double>(kmax));
-      });
+      double kmax = scheme_.wall_stiffness(pass_context(L));  // 0 on a rank without SPH particles of this level
       kmax = comm().max(kmax);
       if (kmax > 0) dt = std::min(dt, 1.0 / kmax);
     }
@@ -157,25 +150,14 @@ template <int D>
 void Simulation<D>::shift_particles() {
   ensure_neighbours();
   domain_.refresh_state_halos(p_);
-  const int n = n_own_;
   const auto x0_ = p_.get(field::StagePosition{});
   const auto u0_ = p_.get(field::StageVelocity{});
   const auto rho0_ = p_.get(field::StageDensity{});
-  with_kernel<D>(scene_.kernel, R_, [&](auto W) {
-    const double max_shift = 0.02 * scene_.dx;  // per step (kernels/ShiftingPass.hpp)
-    // the local box: it wraps the shifted positions as the integrator does (shifting with
-    // walls, whose periodic images need the global box, is refused by the case file)
-    if (walls_.empty())
-      ShiftingPass<D, decltype(W), false>{domain_.list(), domain_.local_box(), W, R_ * R_, 0.5 * R_ * R_, W.value(scene_.dx), max_shift,
-                                          p_.get(field::Position{}), p_.get(field::Velocity{}), p_.get(field::Density{}),
-                                          p_.get(field::Mass{}), x0_, u0_, rho0_, walls_.points(), walls_.cells()}
-          .run(n);
-    else
-      ShiftingPass<D, decltype(W), true>{domain_.list(), domain_.local_box(), W, R_ * R_, 0.5 * R_ * R_, W.value(scene_.dx), max_shift,
-                                         p_.get(field::Position{}), p_.get(field::Velocity{}), p_.get(field::Density{}),
-                                         p_.get(field::Mass{}), x0_, u0_, rho0_, walls_.points(), walls_.cells()}
-          .run(n);
-  });
+  // the local box: it wraps the shifted positions as the integrator does (shifting with
+  // walls, whose periodic images need the global box, is refused by the case file)
+  PassContext<D> c = pass_context(levels().front());
+  c.box = domain_.local_box();
+  scheme_.shifting(c, x0_, u0_, rho0_, 0.02 * scene_.dx);  // at most 0.02 dx per step (kernels/ShiftingPass.hpp)
   Kokkos::deep_copy(p_.get(field::Position{}), x0_);
   Kokkos::deep_copy(p_.get(field::Velocity{}), u0_);
   Kokkos::deep_copy(p_.get(field::Density{}), rho0_);

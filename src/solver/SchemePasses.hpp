@@ -1,0 +1,177 @@
+#pragma once
+// The passes of a compiled scheme (solver/Scheme.hpp), each a function template over the
+// smoothing kernel K and the scene's options, and make_scheme, which picks them once.
+// Included by SimulationImpl.hpp only.
+#include "kernels/DensityGradientPass.hpp"
+#include "kernels/FreeSurfacePass.hpp"
+#include "kernels/MorrisLatticeFactor.hpp"
+#include "kernels/ProbeSum.hpp"
+#include "kernels/RenormalisedContinuity.hpp"
+#include "kernels/ShiftingPass.hpp"
+#include "kernels/WallForces.hpp"
+#include "kernels/WaveGauge.hpp"
+#include "kernels/apr/GuardSpacing.hpp"
+#include "kernels/apr/LevelSums.hpp"
+#include "solver/FluxSelect.hpp"
+#include "solver/KernelDispatch.hpp"
+#include "solver/Scheme.hpp"
+#include "solver/WallFluxDispatch.hpp"
+
+namespace ondine {
+
+namespace pass {
+
+template <class Context>
+auto range(const Context& c) {
+  return Kokkos::RangePolicy<ExecSpace>(c.first, c.end);
+}
+
+// the density gradient; next to no-slip walls also the consistent Laplacian's weights
+template <int D, class K, bool Consistent>
+void density_gradient(const PassContext<D>& c) {
+  const K W(c.R);
+  if constexpr (Consistent)
+    Kokkos::parallel_for("ondine::DensityGradient+consistent_laplacian", range(c),
+                         DensityGradientPass<D, K, true>{c.list, c.box, W, c.R * c.R, c.x, c.rho, c.m, c.grad_rho,
+                                                         {c.wall, c.wall_cells, 0.05 * c.R, c.morris_factor, c.gamma, c.weights}});
+  else
+    Kokkos::parallel_for("ondine::DensityGradient", range(c),
+                         DensityGradientPass<D, K>{c.list, c.box, W, c.R * c.R, c.x, c.rho, c.m, c.grad_rho});
+}
+
+// the continuity's renormalised divergence (kernels/RenormalisedContinuity.hpp)
+template <int D, class K, bool Walls>
+void renormalised_continuity(const PassContext<D>& c) {
+  const K W(c.R);
+  if constexpr (Walls)
+    Kokkos::parallel_for("ondine::RenormalisedContinuity", range(c),
+                         RenormalisedContinuity<D, K, true>{c.list, c.box, W, c.R * c.R, c.wall, c.wall_cells, c.x, c.u, c.rho, c.m,
+                                                            c.gamma, c.drho});
+  else
+    Kokkos::parallel_for("ondine::RenormalisedContinuity", range(c),
+                         RenormalisedContinuity<D, K, false>{c.list, c.box, W, c.R * c.R, {}, {}, c.x, c.u, c.rho, c.m, {}, c.drho});
+}
+
+// the free-surface flag (4.86)-(4.87)
+template <int D, class K, bool Walls>
+void free_surface(const PassContext<D>& c) {
+  const K W(c.R);
+  Kokkos::parallel_for("ondine::FreeSurface", range(c),
+                       FreeSurfacePass<D, K, Walls>{c.list, c.box, W, c.R, c.R * c.R, c.wall, c.wall_cells, c.x, c.rho, c.m,
+                                                    Walls ? c.gamma : field_view_t<field::ShepardGamma, D>(), c.free_surface});
+}
+
+// max_i kappa_i of the no-slip wall term (4.85) (kernels/WallFluxPass.hpp)
+template <int D, class K>
+double wall_stiffness(const PassContext<D>& c) {
+  double kmax = 0;
+  Kokkos::parallel_reduce("ondine::TimeStep::wall_viscous", range(c),
+                          WallViscousStiffness<D, K>{c.wall, c.wall_cells, K(c.R), c.R * c.R, c.nu, 0.05 * c.R, c.box, c.x, c.gamma},
+                          Kokkos::Max<double>(kmax));
+  return kmax;
+}
+
+// particle shifting (kernels/ShiftingPass.hpp); c.box wraps the shifted positions
+template <int D, class K, bool Walls>
+void shifting(const PassContext<D>& c, const field_view_t<field::Position, D>& x_out, const field_view_t<field::Velocity, D>& u_out,
+              const field_view_t<field::Density, D>& rho_out, double max_shift) {
+  const K W(c.R);
+  Kokkos::parallel_for("ondine::Shifting", range(c),
+                       ShiftingPass<D, K, Walls>{c.list, c.box, W, c.R * c.R, 0.5 * c.R * c.R, W.value(c.dx), max_shift, c.x, c.u,
+                                                 c.rho, c.m, x_out, u_out, rho_out, c.wall, c.wall_cells});
+}
+
+// Shepard sums at a point (2.40-2.41): at radius c.R, or with zones each SPH particle
+// with its level's radius (apr::ProbeSum)
+template <int D, class K, bool Levels>
+double probe_sum(const PassContext<D>& c, const Vec<D>& xp, int what) {
+  double acc = 0;
+  const auto policy = Kokkos::RangePolicy<ExecSpace>(0, c.end);
+  if constexpr (Levels) {
+    apr::ProbeSum<D, K> f{c.zones, K(1.0), xp, c.x, c.u, c.rho, c.P, c.m, c.birth, c.guard, what};
+    Kokkos::parallel_reduce("ondine::Probe", policy, f, acc);
+  } else {
+    const K W(c.R);
+    auto reduce = [&](auto value) {
+      Kokkos::parallel_reduce("ondine::Probe", policy, ProbeSum<D, K, decltype(value)>{c.box, W, xp, c.x, c.rho, c.m, value}, acc);
+    };
+    using Scalar = probe_value::Scalar<field_view_t<field::Density, D>>;
+    using Component = probe_value::Component<field_view_t<field::Velocity, D>>;
+    if (what == 0) reduce(probe_value::One{});
+    else if (what == 1) reduce(Scalar{c.P});
+    else if (what == 2) reduce(Scalar{c.rho});
+    else reduce(Component{c.u, what - 3});
+  }
+  return acc;
+}
+
+// the Shepard sum at each wave-gauge sample point (kernels/WaveGauge.hpp)
+template <int D, class K, bool Levels>
+void gauge_sums(const PassContext<D>& c, const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& points,
+                const Kokkos::View<double*, MemSpace>& sums) {
+  const auto policy = Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(points.extent(0)));
+  if constexpr (Levels)
+    Kokkos::parallel_for("ondine::WaveGauge", policy,
+                         GaugeShepardSum<D, K, true>{c.cells, c.box, K(1.0), c.R * c.R, c.end, c.x, c.rho, c.m, points, sums, c.zones,
+                                                     c.birth, c.guard});
+  else
+    Kokkos::parallel_for("ondine::WaveGauge", policy,
+                         GaugeShepardSum<D, K>{c.cells, c.box, K(c.R), c.R * c.R, c.end, c.x, c.rho, c.m, points, sums});
+}
+
+// the traction of the fluid at each wall point (kernels/WallForces.hpp)
+template <int D, class K, bool Levels>
+void wall_traction(const PassContext<D>& c, const Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace>& traction) {
+  const auto policy = Kokkos::RangePolicy<ExecSpace>(0, c.wall.count);
+  if constexpr (Levels)
+    Kokkos::parallel_for("ondine::NFM::wall_traction", policy,
+                         WallTraction<D, K, true>{c.wall, c.cells, K(1.0), c.R * c.R, c.nu, c.rho0, c.eos, 0.05 * c.R, c.box, c.x, c.u,
+                                                  c.rho, c.P, c.m, c.grad_rho, traction, c.zones, c.birth, c.guard, c.velocity_muscl});
+  else
+    Kokkos::parallel_for("ondine::NFM::wall_traction", policy,
+                         WallTraction<D, K>{c.wall, c.cells, K(c.R), c.R * c.R, c.nu, c.rho0, c.eos, 0.05 * c.R, c.box, c.x, c.u, c.rho,
+                                            c.P, c.m, c.grad_rho, traction, {}, {}, {}, c.velocity_muscl});
+}
+
+// the guard spacing shifts of one level's guards (kernels/apr/GuardSpacing.hpp)
+template <int D, class K, bool Walls>
+long guard_spacing(const PassContext<D>& c, const Kokkos::View<double* [D], Kokkos::LayoutRight, MemSpace>& shift, bool daughters,
+                   bool mothers) {
+  long moved = 0;
+  Kokkos::parallel_reduce("ondine::APR::GuardSpacing", range(c),
+                          apr::GuardSpacing<D, K, Walls>{c.cells, c.box, c.zones, K(1.0), c.R, c.dx, c.segments, c.wall, c.wall_cells,
+                                                         c.x, c.rho, c.m, c.birth, c.mother,
+                                                         Walls ? c.gamma : field_view_t<field::ShepardGamma, D>(), shift, daughters,
+                                                         mothers},
+                          moved);
+  return moved;
+}
+
+template <int D, class K>
+CompiledScheme<D> compile(const Scene& s) {
+  const bool walls = !s.walls.empty(), levels = !s.refinement_zones.empty();
+  CompiledScheme<D> c;
+  c.flux = select_flux<D, K>(s);
+  if (walls) c.wall_flux = select_wall_flux<D, K>(s);
+  if (walls && uses_consistent_laplacian(s)) c.density_gradient = &density_gradient<D, K, true>;
+  else c.density_gradient = &density_gradient<D, K, false>;
+  c.renormalised_continuity = walls ? &renormalised_continuity<D, K, true> : &renormalised_continuity<D, K, false>;
+  c.free_surface = walls ? &free_surface<D, K, true> : &free_surface<D, K, false>;
+  c.wall_stiffness = &wall_stiffness<D, K>;
+  c.shifting = walls ? &shifting<D, K, true> : &shifting<D, K, false>;
+  c.probe_sum = levels ? &probe_sum<D, K, true> : &probe_sum<D, K, false>;
+  c.gauge_sums = levels ? &gauge_sums<D, K, true> : &gauge_sums<D, K, false>;
+  c.wall_traction = levels ? &wall_traction<D, K, true> : &wall_traction<D, K, false>;
+  c.guard_spacing = walls ? &guard_spacing<D, K, true> : &guard_spacing<D, K, false>;
+  if (s.viscous_term == ViscousTerm::Morris) c.morris_factor = morris_lattice_factor<D>(K(s.R()), s.R(), s.dx);
+  return c;
+}
+
+}  // namespace pass
+
+template <int D>
+CompiledScheme<D> make_scheme(const Scene& scene) {
+  return with_kernel<D>(scene.kernel, scene.R(), [&](auto W) { return pass::compile<D, decltype(W)>(scene); });
+}
+
+}  // namespace ondine
