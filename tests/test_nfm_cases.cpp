@@ -131,7 +131,7 @@ TEST_CASE("Poiseuille: scheme.consistent_laplacian false selects the thesis' wal
   CHECK(thesis < 0.01);  // still within the issue's 1 %
 }
 
-// The start-up Couette series (solver/References): the wall values, the steady limit, the
+// The start-up Couette series (reference/References): the wall values, the steady limit, the
 // fluid at rest at t = 0, and the diffusion equation u_t = nu u_yy it solves (central differences)
 TEST_CASE("Start-up Couette reference: wall values, limits and the diffusion equation", "[unit][reference]") {
   const double L = 1, V0 = 1, nu = 0.1;

@@ -48,7 +48,7 @@
 // 0.5 to 1.3 dx_r wide where the fine jet is 2 dx_r wide. Leaving the zone's top they
 // made a coarse jet of clumped particles (kernel sum up to 2.1 gamma), whose pressure
 // noise was 4x the coarse run's (docs/apr.md, session 7; the other cause there, roles
-// that lagged behind the flow, is fixed in rebuild_neighbours). The thesis shifts the
+// that lagged behind the flow, is fixed in ensure_neighbours, src/solver/SimulationLists.hpp). The thesis shifts the
 // mothers in the zone too ((5.14)-(5.16), Figs 5.9-5.10, run 2). Here a mother guard
 // moves by the same law, but against the
 // concentration of its daughters' level as reference:
