@@ -89,6 +89,29 @@ struct WallLeakCount {
   }
 };
 
+// The check of a fill before the first step (2D): the particles within R of a wall
+// segment, beside its span, counted per wall on the segment's fluid side (n_in) and on its
+// solid side: count(w, 0) in front, count(w, 1) behind. A wall whose fluid_side is the
+// wrong way round has its fluid behind it.
+template <int D>
+struct WallSideCount {
+  WallSegments<D> seg;
+  double R;
+  field_view_t<field::Position, D> x;
+  Kokkos::View<long* [2], Kokkos::LayoutRight, MemSpace> count;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    if constexpr (D == 2) {
+      const Vec<2> p = load<2>(x, i);
+      for (int s = 0; s < seg.count; ++s) {
+        const Vec<2> a = load<2>(seg.a, s), b = load<2>(seg.b, s);
+        const double t = dot(p - a, b - a) / norm2(b - a);
+        const double dn = dot(load<2>(seg.n_in, s), p - a);
+        if (t >= 0 && t <= 1 && dn > -R && dn < R) Kokkos::atomic_increment(&count(seg.wall(s), dn >= 0 ? 0 : 1));
+      }
+    }
+  }
+};
+
 // Exclusive scan of keep flags into new indices; total in the return value.
 struct KeepScan {
   Kokkos::View<int*, MemSpace> keep, index;

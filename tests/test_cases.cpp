@@ -1,6 +1,7 @@
 // The cases in cases/ as regression tests on integral quantities, and the
 // command line on bad input (message, exit code, no output written).
 #include <catch2/catch.hpp>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -20,7 +21,8 @@ const std::string src = ONDINE_SOURCE_DIR;
 
 // Runs `ondine args`, returns (exit code, stderr).
 std::pair<int, std::string> run_cli(const std::string& args) {
-  const fs::path err = fs::temp_directory_path() / "ondine_cli_stderr.txt";
+  // per process: two test runs at once (two checkouts) must not read each other's messages
+  const fs::path err = fs::temp_directory_path() / ("ondine_cli_stderr_" + std::to_string(getpid()) + ".txt");
   const std::string cmd = std::string(ONDINE_BINARY) + " " + args + " > /dev/null 2> " + err.string();
   const int status = std::system(cmd.c_str());
   std::ifstream in(err);
@@ -40,7 +42,7 @@ double taylor_green_error(double dx, double t_end) {
 }  // namespace
 
 TEST_CASE("Bad input on the command line: message, non-zero exit, no output folder", "[cli]") {
-  const fs::path dir = fs::temp_directory_path() / "ondine_bad_input";
+  const fs::path dir = fs::temp_directory_path() / ("ondine_bad_input_" + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path out = dir / "out";
@@ -114,7 +116,7 @@ TEST_CASE("Taylor-Green vortex with shifting: error at t = 0.5 below 5 % and fal
 }
 
 TEST_CASE("A run that blows up stops itself, names what went wrong, keeps the last good state", "[cli][stability]") {
-  const fs::path out = fs::temp_directory_path() / "ondine_blowup";
+  const fs::path out = fs::temp_directory_path() / ("ondine_blowup_" + std::to_string(getpid()));
   fs::remove_all(out);
   // an acoustic CFL ten times the RK4 bound makes the Taylor-Green run explode within a few dozen steps
   const auto [rc, err] = run_cli("run " + src + "/cases/taylor_green_2d.yaml --quiet --out " + out.string() +

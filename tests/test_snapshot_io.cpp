@@ -1,5 +1,6 @@
 // HDF5 snapshot round trip and the XDMF index.
 #include <catch2/catch.hpp>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -11,7 +12,7 @@ using namespace ondine;
 namespace fs = std::filesystem;
 
 TEST_CASE("Snapshots round-trip every allocated field exactly", "[unit][io]") {
-  const fs::path dir = fs::temp_directory_path() / "ondine_test_snapshot_io";
+  const fs::path dir = fs::temp_directory_path() / ("ondine_test_snapshot_io_" + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const int n = 37;
@@ -72,7 +73,7 @@ TEST_CASE("Snapshots round-trip every allocated field exactly", "[unit][io]") {
 }
 
 TEST_CASE("Reading a file that is not a snapshot fails with its name", "[unit][io]") {
-  const fs::path f = fs::temp_directory_path() / "ondine_not_a_snapshot.h5";
+  const fs::path f = fs::temp_directory_path() / ("ondine_not_a_snapshot_" + std::to_string(getpid()) + ".h5");
   std::ofstream(f) << "garbage";
   try {
     read_snapshot(f.string());

@@ -179,6 +179,7 @@ class Simulation {
   void fill(std::int64_t first, std::int64_t end);
   void load_checkpoint(const CheckpointSlice& restart);
   void remove_outside_fluid();
+  void check_wall_sides();
   void build_fluid_region();
   // lists (solver/SimulationLists.hpp): one path, uniform or by level
   void ensure_neighbours();

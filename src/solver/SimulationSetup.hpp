@@ -59,6 +59,7 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
   } else {
     fill(lattice_first_, lattice_end);
     if (walls) remove_outside_fluid();
+    if (walls) check_wall_sides();
   }
   n_own_ = static_cast<int>(p_.size());
   if (!comm().serial()) {
@@ -125,6 +126,34 @@ void Simulation<D>::build_fluid_region() {
   region_.closed.count = dev(count, "ondine::NFM::closed_count");
   region_.closed.fluid_inside = dev(inside, "ondine::NFM::closed_inside");
   region_.closed.walls = static_cast<int>(first.size());
+}
+
+// Refuses a fill whose fluid lies on the solid side of a wall (walls[i].fluid_side the
+// wrong way round, or the points in the reverse order), which would start, blow up at the
+// first step and leave snapshots behind: the particles within R of each wall are counted
+// on either side of its segments (kernels/FluidRegion.hpp), and a wall with more fluid
+// behind it than in front is named. A wall with fluid on both sides at equal counts (two
+// tanks back to back) passes.
+template <int D>
+void Simulation<D>::check_wall_sides() {
+  if constexpr (D != 2) return;
+  const int nw = static_cast<int>(scene_.walls.size());
+  Kokkos::View<long* [2], Kokkos::LayoutRight, MemSpace> count("ondine::NFM::wall_side_count", nw);
+  Kokkos::parallel_for("ondine::NFM::wall_side_count", Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(p_.size())),
+                       WallSideCount<D>{walls_.segments(), R_, p_.get(field::Position{}), count});
+  auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), count);
+  for (int w = 0; w < nw; ++w) {
+    const std::int64_t front = comm().sum(static_cast<std::int64_t>(h(w, 0))), behind = comm().sum(static_cast<std::int64_t>(h(w, 1)));
+    if (behind <= front) continue;
+    const Wall& wall = scene_.walls[static_cast<std::size_t>(w)];
+    const char* side = wall.closed ? (wall.fluid_inside ? "inside" : "outside") : (wall.fluid_inside ? "left" : "right");
+    const char* other = wall.closed ? (wall.fluid_inside ? "outside" : "inside") : (wall.fluid_inside ? "right" : "left");
+    throw std::invalid_argument(scene_.source_file + ": walls[" + std::to_string(w) + "] ('" + wall.name + "'): " +
+                                std::to_string(behind) + " fluid particles lie within R of it on its solid side and " +
+                                std::to_string(front) + " on its fluid side; with fluid_side: " + side +
+                                " the fluid must be on the " + side + " of the wall (walking along its points for an open wall): "
+                                "expected fluid_side: " + other + ", or the fluid blocks on the other side");
+  }
 }
 
 // Lattice fill of each block at (k + 1/2) dx, with its initial velocity and pressure.
