@@ -12,6 +12,13 @@ namespace ondine {
 
 namespace errors {
 
+template <int D>
+bool every_axis_periodic(const Scene& scene) {
+  for (int k = 0; k < D; ++k)
+    if (!scene.periodic[k]) return false;
+  return true;
+}
+
 // mass drift against the initial mass; with no walls and every axis periodic, internal
 // forces cancel pairwise and the momentum is P(0) + M (g + f) t exactly
 template <int D>
@@ -19,8 +26,7 @@ void conservation(const Simulation<D>& sim, const Diagnostics& d, std::map<std::
   const Scene& scene = sim.scene();
   const Diagnostics& initial = sim.initial_diagnostics();
   const double t = sim.time();
-  bool all_periodic = true;
-  for (int k = 0; k < D; ++k) all_periodic = all_periodic && scene.periodic[k];
+  const bool all_periodic = every_axis_periodic<D>(scene);
   e["mass_drift"] = std::abs(d.mass - initial.mass) / initial.mass;
   if (all_periodic && !sim.has_walls() && scene.damping_time == 0) {
     // With no walls, internal forces cancel pairwise: P(t) = P(0) + M (g + f) t exactly.
@@ -41,8 +47,7 @@ void taylor_green(const Simulation<D>& sim, const Diagnostics& d, std::map<std::
   const Scene& scene = sim.scene();
   const Communicator& comm = sim.comm();
   const double t = sim.time();
-  bool all_periodic = true;
-  for (int k = 0; k < D; ++k) all_periodic = all_periodic && scene.periodic[k];
+  const bool all_periodic = every_axis_periodic<D>(scene);
   bool taylor_green = all_periodic && D == 2;
   for (const FluidBlock& b : scene.blocks) taylor_green = taylor_green && b.velocity_kind == InitialVelocity::TaylorGreen;
   if (taylor_green) {

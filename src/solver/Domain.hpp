@@ -74,22 +74,14 @@ class Domain {
   void build_list(const field_view_t<field::Position, D>& x, int n) { list_.build(cells_, box_, x, n, cutoff_); }
   // a list build is complete: the Verlet reference positions are these
   void built(const field_view_t<field::Position, D>& x) {
-    if (skin_ > 0) {
-      if (x_at_build_.extent(0) != x.extent(0))
-        x_at_build_ = field_view_t<field::Position, D>("ondine::NeighbourList::x_at_build", x.extent(0));
-      Kokkos::deep_copy(x_at_build_, x);
-    }
+    set_reference(x);
     list_valid_ = true;
     ++builds_;
   }
   const field_view_t<field::Position, D>& built_positions() const { return x_at_build_; }
   // the Verlet reference positions after a relisting that moved particles between ranks
   void restore_built_positions(const field_view_t<field::Position, D>& x_ref, bool valid) {
-    if (valid && skin_ > 0) {
-      if (x_at_build_.extent(0) != x_ref.extent(0))
-        x_at_build_ = field_view_t<field::Position, D>("ondine::NeighbourList::x_at_build", x_ref.extent(0));
-      Kokkos::deep_copy(x_at_build_, x_ref);
-    }
+    if (valid) set_reference(x_ref);
     list_valid_ = valid;
   }
 
@@ -176,6 +168,14 @@ class Domain {
   }
 
  private:
+  // the Verlet reference positions (only with a skin)
+  void set_reference(const field_view_t<field::Position, D>& x) {
+    if (skin_ <= 0) return;
+    if (x_at_build_.extent(0) != x.extent(0))
+      x_at_build_ = field_view_t<field::Position, D>("ondine::NeighbourList::x_at_build", x.extent(0));
+    Kokkos::deep_copy(x_at_build_, x);
+  }
+
   Communicator comm_;
   PeriodicBox<D> box_, local_box_;
   double cutoff_ = 0, skin_ = 0;

@@ -180,6 +180,22 @@ class Simulation {
   void load_checkpoint(const CheckpointSlice& restart);
   void remove_outside_fluid();
   void check_wall_sides();
+  // f(tag) for each field a checkpoint carries: the state, and with zones the APR fields
+  // (level, role, mother flag and mother's id of each particle)
+  template <class F>
+  void for_each_checkpoint_field(F&& f) const {
+    f(field::Position{});
+    f(field::Velocity{});
+    f(field::Density{});
+    f(field::Mass{});
+    f(field::GlobalId{});
+    if (!apr_on_) return;
+    f(field::AprBirthLevel{});
+    f(field::AprLevel{});
+    f(field::AprGuard{});
+    f(field::AprMother{});
+    f(field::AprParent{});
+  }
   void build_fluid_region();
   // lists (solver/SimulationLists.hpp): one path, uniform or by level
   void ensure_neighbours();
@@ -191,7 +207,6 @@ class Simulation {
   void refinement_bookkeeping();
   void refresh_guard_halos();       // several ranks: the interpolated fields of the guards' halo copies
   void build_level_wall_cells();
-  const CellList<D>& wall_cells(int level) const { return level == 0 ? walls_.cells() : level_wall_cells_[level]; }
   // evaluation (solver/SimulationEvaluate.hpp)
   void update_walls(double t);
   bool consistent_laplacian() const;

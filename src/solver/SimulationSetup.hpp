@@ -268,19 +268,7 @@ void Simulation<D>::load_checkpoint(const CheckpointSlice& c) {
     Kokkos::parallel_for("ondine::Restart::unpack", Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(c.rows)),
                          exchange::UnpackRows<V>{p_.allocate(tag), dev, 0, 0});
   };
-  put(field::Position{});
-  put(field::Velocity{});
-  put(field::Density{});
-  put(field::Mass{});
-  put(field::GlobalId{});
-  if (apr_on_) {
-    // level, role, mother flag and mother's id of each particle, as the run saved them
-    put(field::AprBirthLevel{});
-    put(field::AprLevel{});
-    put(field::AprGuard{});
-    put(field::AprMother{});
-    put(field::AprParent{});
-  }
+  for_each_checkpoint_field(put);
 }
 
 template <int D>
@@ -298,18 +286,7 @@ std::map<std::string, std::pair<std::vector<double>, int>> Simulation<D>::state_
     Kokkos::deep_copy(Kokkos::View<double**, Kokkos::LayoutRight, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(rows.data(), n_own_, w), dev);
     out[decltype(tag)::label] = {std::move(rows), w};
   };
-  take(field::Position{});
-  take(field::Velocity{});
-  take(field::Density{});
-  take(field::Mass{});
-  take(field::GlobalId{});
-  if (apr_on_) {
-    take(field::AprBirthLevel{});
-    take(field::AprLevel{});
-    take(field::AprGuard{});
-    take(field::AprMother{});
-    take(field::AprParent{});
-  }
+  for_each_checkpoint_field(take);
   return out;
 }
 
