@@ -1,62 +1,60 @@
 #pragma once
 // Which lattice points of the initial fill lie in the fluid: on the fluid side
-// of every closed wall (inside a tank, outside a body; crossing-number test) and
-// at least `clearance` from every wall segment (dx/2 unless the block's
-// wall_clearance says otherwise). Also the impermeability
+// of every closed wall (inside a tank, outside a body; crossing-number test in 2D,
+// winding number in 3D) and at least `clearance` from every wall facet (dx/2 unless
+// the block's wall_clearance says otherwise). Also the impermeability
 // diagnostic: particles closer than 0.1 dx to a wall or on its solid side.
 #include "kernels/WallSet.hpp"
 
 namespace ondine {
 
-namespace detail {
-KOKKOS_INLINE_FUNCTION double segment_distance2(const Vec<2>& p, const Vec<2>& a, const Vec<2>& b) {
-  const Vec<2> ab = b - a;
-  double t = dot(p - a, ab) / norm2(ab);
-  t = t < 0 ? 0 : (t > 1 ? 1 : t);
-  return norm2(p - (a + t * ab));
-}
-}  // namespace detail
-
-// Closed walls as ranges of segments, with the side the fluid is on.
+// Closed walls as ranges of facets, with the side the fluid is on.
 struct ClosedWallRanges {
-  Kokkos::View<int*, MemSpace> first, count;  // segment range of each closed wall
+  Kokkos::View<int*, MemSpace> first, count;  // facet range of each closed wall
   Kokkos::View<int*, MemSpace> fluid_inside;  // 1: tank, 0: body
   int walls = 0;
 };
 
 template <int D>
 struct FluidRegion {
-  WallSegments<D> seg;
+  WallFacets<D> facets;
+  FacetCells<D> cells;  // the facets near each cell: clearances and depths below R only
+  PeriodicBox<D> box;
   ClosedWallRanges closed;
-  double behind = 0;  // depth behind a segment that counts as crossed (dx)
+  double behind = 0;  // depth behind a facet that counts as crossed (dx)
 
-  // 1 when p is in the fluid with at least `clearance` to every segment
+  // 1 when p is in the fluid with at least `clearance` (< R) to every facet
   KOKKOS_INLINE_FUNCTION bool contains(const Vec<D>& p, double clearance) const {
-    if constexpr (D != 2) {
-      return true;  // walls are 2D only (the parser refuses 3D walls)
-    } else {
-      return contains2(p, clearance);
-    }
+    bool out = false;
+    for_each_facet_near<D>(cells, box, p, [&](const int s, const Vec<D>& ps) {
+      if (out) return;
+      const Facet<D> f = facets(s);
+      if (facet_distance2<D>(ps, f) < clearance * clearance) out = true;
+      // behind a facet (its solid side), less than `behind` from it: crossed (open walls too)
+      const double dn = facet_signed_distance<D>(ps, f);
+      if (dn < 0 && dn > -behind && facet_spans<D>(ps, f)) out = true;
+    });
+    if (out) return false;
+    for (int w = 0; w < closed.walls; ++w)
+      if (inside_closed(p, w) != (closed.fluid_inside(w) == 1)) return false;
+    return true;
   }
-  KOKKOS_INLINE_FUNCTION bool contains2(const Vec<2>& p, double clearance) const {
-    for (int s = 0; s < seg.count; ++s) {
-      const Vec<2> a = load<2>(seg.a, s), b = load<2>(seg.b, s);
-      if (detail::segment_distance2(p, a, b) < clearance * clearance) return false;
-      // behind a segment (its solid side), less than `behind` from it: crossed (open walls too)
-      const double t = dot(p - a, b - a) / norm2(b - a);
-      const double dn = dot(load<2>(seg.n_in, s), p - a);
-      if (t >= 0 && t <= 1 && dn < 0 && dn > -behind) return false;
-    }
-    for (int w = 0; w < closed.walls; ++w) {
+
+  // p inside closed wall w: the crossing number of its polygon (2D), its winding number (3D)
+  KOKKOS_INLINE_FUNCTION bool inside_closed(const Vec<D>& p, const int w) const {
+    if constexpr (D == 2) {
       bool inside = false;
       for (int s = closed.first(w); s < closed.first(w) + closed.count(w); ++s) {
-        const Vec<2> a = load<2>(seg.a, s), b = load<2>(seg.b, s);
+        const Vec<2> a = load<2>(facets.a, s), b = load<2>(facets.b, s);
         if ((a[1] > p[1]) != (b[1] > p[1]) && p[0] < a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))
           inside = !inside;
       }
-      if (inside != (closed.fluid_inside(w) == 1)) return false;
+      return inside;
+    } else {
+      double winding = 0.0;  // -1 inside a tank (n_in inwards), +1 inside a body
+      for (int s = closed.first(w); s < closed.first(w) + closed.count(w); ++s) winding += triangle_winding(p, facets(s));
+      return closed.fluid_inside(w) == 1 ? winding < -0.5 : winding > 0.5;
     }
-    return true;
   }
 };
 
@@ -89,26 +87,24 @@ struct WallLeakCount {
   }
 };
 
-// The check of a fill before the first step (2D): the particles within R of a wall
-// segment, beside its span, counted per wall on the segment's fluid side (n_in) and on its
-// solid side: count(w, 0) in front, count(w, 1) behind. A wall whose fluid_side is the
-// wrong way round has its fluid behind it.
+// The check of a fill before the first step: the particles within R of a wall facet,
+// beside its span, counted per wall on the facet's fluid side (n_in) and on its solid
+// side: count(w, 0) in front, count(w, 1) behind. A wall whose fluid_side is the wrong way
+// round has its fluid behind it.
 template <int D>
 struct WallSideCount {
-  WallSegments<D> seg;
+  WallFacets<D> facets;
+  FacetCells<D> cells;
+  PeriodicBox<D> box;
   double R;
   field_view_t<field::Position, D> x;
   Kokkos::View<long* [2], Kokkos::LayoutRight, MemSpace> count;
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
-    if constexpr (D == 2) {
-      const Vec<2> p = load<2>(x, i);
-      for (int s = 0; s < seg.count; ++s) {
-        const Vec<2> a = load<2>(seg.a, s), b = load<2>(seg.b, s);
-        const double t = dot(p - a, b - a) / norm2(b - a);
-        const double dn = dot(load<2>(seg.n_in, s), p - a);
-        if (t >= 0 && t <= 1 && dn > -R && dn < R) Kokkos::atomic_increment(&count(seg.wall(s), dn >= 0 ? 0 : 1));
-      }
-    }
+    for_each_facet_near<D>(cells, box, load<D>(x, i), [&](const int s, const Vec<D>& p) {
+      const Facet<D> f = facets(s);
+      const double dn = facet_signed_distance<D>(p, f);
+      if (dn > -R && dn < R && facet_spans<D>(p, f)) Kokkos::atomic_increment(&count(facets.wall(s), dn >= 0 ? 0 : 1));
+    });
   }
 };
 

@@ -7,22 +7,25 @@
 // is lost behind it or blows up (docs/validation.md, stability suite).
 // After each time step, the path of each particle over the step, from x0 (the
 // start of the step, moved with the wall's normal motion: x0 + (u_w.n) n dt) to x1, is tested against
-// every wall segment; where it crosses one from the fluid side (the earliest
-// crossing, corners included), x1 is mirrored back across that segment's line,
+// every wall facet near its end (a segment in 2D, a triangle in 3D); where it crosses one
+// from the fluid side (the earliest crossing, corners included), x1 is mirrored back
+// across that facet's line or plane,
 // x1 <- x1 - 2 d1 n_in, and the velocity relative to the wall loses its component
 // into the wall (an inelastic collision: no energy is added). Two sweeps, for the
 // second wall of a corner. Mass is untouched; the momentum removed is the wall's
 // reaction. Each corrected particle is counted (summary.json errors
 // `wall_corrections`), so a run says how often the guard acted; the leak
 // diagnostics (wall_leaks, outside_domain) still count particles that end close
-// to a wall. Every segment is visited, as in ShepardGammaPass.
+// to a wall. The facets are those of the cell of the path's end (kernels/WallSet.hpp), which
+// holds every facet within R of it: a path over one step is much shorter than R.
 #include "kernels/WallSet.hpp"
 
 namespace ondine {
 
 template <int D>
 struct WallImpermeability {
-  WallSegments<D> seg;
+  WallFacets<D> facets;
+  FacetCells<D> cells;  // the facets near the end of the path (a path shorter than R)
   Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> wall_velocity;  // per wall
   double dt;
   PeriodicBox<D> box;
@@ -31,58 +34,54 @@ struct WallImpermeability {
   field_view_t<field::Velocity, D> u;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i, long& corrected) const {
-    if constexpr (D == 2) {
-      const Vec<D> x1_stored = load<D>(x, i);
-      Vec<D> from = load<D>(x0, i);
-      Vec<D> to = from + box.delta(x1_stored, from);  // unwrapped end of the path
-      Vec<D> ui = load<D>(u, i);
-      bool moved = false;
-      bool first_sweep = true;
-      for (int sweep = 0; sweep < 2; ++sweep) {
-        int hit = -1;
-        double tau_hit = 2.0, d_end = 0.0;
-        Vec<D> image = Vec<D>::zero();
-        const int sx = box.periodic[0] ? 1 : 0, sy = box.periodic[1] ? 1 : 0;
-        for (int ox = -sx; ox <= sx; ++ox)
-          for (int oy = -sy; oy <= sy; ++oy) {
-            Vec<D> off;
-            off[0] = ox * box.len[0];
-            off[1] = oy * box.len[1];
-            for (int s = 0; s < seg.count; ++s) {
-              const Vec<D> n = load<D>(seg.n_in, s);
-              const Vec<D> a = load<D>(seg.a, s) - off, ab = load<D>(seg.b, s) - load<D>(seg.a, s);
-              // the start moves with the wall's normal motion over the step (first sweep; then it
-              // is on the wall). Only the normal part: a sliding wall (a cavity lid) keeps its
-              // segments in place, and shifting by its tangential velocity would carry the path
-              // past the segment's end and miss a crossing next to a corner.
-              const Vec<D> p0 = first_sweep ? from + (dt * dot(load<D>(wall_velocity, seg.wall(s)), n)) * n : from;
-              const double d0 = dot(p0 - a, n), d1 = dot(to - a, n);
-              if (!(d0 >= 0.0 && d1 < 0.0)) continue;
-              const double tau = d0 / (d0 - d1);
-              const Vec<D> pc = p0 + tau * (to - p0);
-              const double sigma = dot(pc - a, ab) / norm2(ab);
-              if (sigma < -1e-9 || sigma > 1.0 + 1e-9 || tau >= tau_hit) continue;
-              tau_hit = tau;
-              hit = s;
-              d_end = d1;
-              image = pc;
-            }
-          }
-        if (hit < 0) break;
-        const Vec<D> n = load<D>(seg.n_in, hit);
-        to += (-2.0 * d_end) * n;
-        const double vn = dot(ui - load<D>(wall_velocity, seg.wall(hit)), n);
-        if (vn < 0.0) ui += (-vn) * n;
-        from = image + (1e-12 * box.len[0]) * n;  // the crossing point, on the fluid side
-        first_sweep = false;
-        moved = true;
-      }
-      if (moved) {
-        // back in the same periodic image as the stored position
-        store<D>(x, i, x1_stored + (to - (load<D>(x0, i) + box.delta(x1_stored, load<D>(x0, i)))));
-        store<D>(u, i, ui);
-        ++corrected;
-      }
+    const Vec<D> x1_stored = load<D>(x, i);
+    Vec<D> from = load<D>(x0, i);
+    Vec<D> to = from + box.delta(x1_stored, from);  // unwrapped end of the path
+    Vec<D> ui = load<D>(u, i);
+    bool moved = false;
+    bool first_sweep = true;
+    for (int sweep = 0; sweep < 2; ++sweep) {
+      int hit = -1;
+      double tau_hit = 2.0, d_end = 0.0;
+      Vec<D> image = Vec<D>::zero();
+      Vec<D> q;  // the end of the path wrapped into the box: its cell lists the facets near it
+      for (int k = 0; k < D; ++k) q[k] = box.wrap(to[k], k);
+      for_each_facet_near<D>(cells, box, q, [&](const int s, const Vec<D>& xs) {
+        Facet<D> f = facets(s);
+        const Vec<D> off = xs - to;  // the facet's image in the frame of the path: f - off
+        f.a -= off;
+        f.b -= off;
+        f.c -= off;
+        const Vec<D> n = f.n_in;
+        // the start moves with the wall's normal motion over the step (first sweep; then it
+        // is on the wall). Only the normal part: a sliding wall (a cavity lid) keeps its
+        // facets in place, and shifting by its tangential velocity would carry the path
+        // past the facet's edge and miss a crossing next to a corner.
+        const Vec<D> p0 = first_sweep ? from + (dt * dot(load<D>(wall_velocity, facets.wall(s)), n)) * n : from;
+        const double d0 = facet_signed_distance<D>(p0, f), d1 = facet_signed_distance<D>(to, f);
+        if (!(d0 >= 0.0 && d1 < 0.0)) return;
+        const double tau = d0 / (d0 - d1);
+        const Vec<D> pc = p0 + tau * (to - p0);
+        if (!facet_spans<D>(pc, f, 1e-9) || tau >= tau_hit) return;
+        tau_hit = tau;
+        hit = s;
+        d_end = d1;
+        image = pc;
+      });
+      if (hit < 0) break;
+      const Vec<D> n = load<D>(facets.n_in, hit);
+      to += (-2.0 * d_end) * n;
+      const double vn = dot(ui - load<D>(wall_velocity, facets.wall(hit)), n);
+      if (vn < 0.0) ui += (-vn) * n;
+      from = image + (1e-12 * box.len[0]) * n;  // the crossing point, on the fluid side
+      first_sweep = false;
+      moved = true;
+    }
+    if (moved) {
+      // back in the same periodic image as the stored position
+      store<D>(x, i, x1_stored + (to - (load<D>(x0, i) + box.delta(x1_stored, load<D>(x0, i)))));
+      store<D>(u, i, ui);
+      ++corrected;
     }
   }
 

@@ -1,19 +1,31 @@
 #pragma once
-// Device view of the NFM walls (thesis chapter 4), 2D: the segments (for the
-// analytical Shepard factor, 4.52-4.59) and the midpoint quadrature points of
-// the wall integrals (4.20)-(4.25), each with its outward normal n_out (out of
-// the fluid, nfm.md §0), its length s_j and the wall velocity there.
+// Device view of the NFM walls (thesis chapter 4): the facets, segments (2D) or triangles
+// (3D), for the analytical Shepard factor (4.52-4.59, 4.60-4.82), the fill and the guards; the
+// quadrature points of the wall integrals (4.20)-(4.25), each with its outward normal n_out
+// (out of the fluid, nfm.md §0), its element length (2D) or area (3D) s_j and the wall
+// velocity there; and the facets binned by cell.
+#include "kernels/CellList.hpp"
 #include "kernels/Fields.hpp"
 #include "kernels/PeriodicBox.hpp"
-#include "kernels/ShepardGamma2D.hpp"
+#include "kernels/WallFacet.hpp"
 
 namespace ondine {
 
+// The facets: segments [a, b] (2D) or triangles (a, b, c) (3D), each with n_in and its wall.
 template <int D>
-struct WallSegments {
-  Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> a, b, n_in;
+struct WallFacets {
+  Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> a, b, c, n_in;  // c: 3D only
   Kokkos::View<int*, MemSpace> wall;
   int count = 0;
+
+  KOKKOS_INLINE_FUNCTION Facet<D> operator()(const int s) const {
+    Facet<D> f;
+    f.a = load<D>(a, s);
+    f.b = load<D>(b, s);
+    if constexpr (D == 3) f.c = load<D>(c, s);
+    f.n_in = load<D>(n_in, s);
+    return f;
+  }
 };
 
 template <int D>
@@ -25,40 +37,51 @@ struct WallPoints {
   int count = 0;
 };
 
-// gamma_i = 1 + sum_s gamma_s over the segments within R (4.52); clipped to
-// [1e-3, 1] so that a particle pushed through a wall never divides by ~0.
-// In a periodic axis the segments' images one period away are included too.
-// Every segment is visited for every particle: fine for the tens to hundreds of
-// segments of the cases here; a cell binning of segments is the next step for
-// large wall meshes.
+// The facets near each cell of the particles' grid (cells no smaller than R): cell c lists
+// every facet, or periodic image of a facet, that comes within R of a point of the cell
+// (bounding boxes, so a superset), built once per wall motion (solver/WallModel.cpp). A
+// particle visits the list of its own cell only, so its cost is that of the facets near it
+// whatever the size of the mesh. Entry e is facet facet(e) seen from the particle shifted by
+// image(e) periods (base-3 digits, one per axis: 0, 1, 2 for -1, 0, +1 periods); entries are
+// ordered by image, then facet.
+template <int D>
+struct FacetCells {
+  CellGrid<D> grid;
+  Kokkos::View<int*, MemSpace> start;  // cells + 1
+  Kokkos::View<int*, MemSpace> facet, image;
+};
+
+// f(s, x_s) for each facet s listed in the cell of x, x_s = x shifted to the facet's image.
+template <int D, class F>
+KOKKOS_INLINE_FUNCTION void for_each_facet_near(const FacetCells<D>& cells, const PeriodicBox<D>& box, const Vec<D>& x,
+                                                F&& f) {
+  int home[D];
+  for (int k = 0; k < D; ++k) home[k] = cells.grid.coord(x[k], k);
+  const int c = cells.grid.linear(home);
+  for (int e = cells.start(c); e < cells.start(c + 1); ++e) {
+    Vec<D> xs = x;
+    for (int k = 0, code = cells.image(e); k < D; ++k, code /= 3) xs[k] += (code % 3 - 1) * box.len[k];
+    f(cells.facet(e), xs);
+  }
+}
+
+// gamma_i = 1 + sum of the facets' terms (2D 4.52-4.55, 3D 4.80-4.82) over the facets near
+// particle i; clipped to [1e-3, 1] so that a particle pushed through a wall never divides by
+// ~0. In a periodic axis the facets' images one period away are included too.
 template <int D>
 struct ShepardGammaPass {
-  WallSegments<D> seg;
+  WallFacets<D> facets;
+  FacetCells<D> cells;
   double R;
   PeriodicBox<D> box;
   field_view_t<field::Position, D> x;
   Kokkos::View<double*, MemSpace> gamma;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
-    const Vec<D> xi = load<D>(x, i);
-    double g = 0.0;  // sum of gamma_s (4.55); gamma from shepard_gamma_from_sum
-    if constexpr (D == 2) {
-      const int sx = box.periodic[0] ? 1 : 0, sy = box.periodic[1] ? 1 : 0;
-      for (int ox = -sx; ox <= sx; ++ox)
-        for (int oy = -sy; oy <= sy; ++oy) {
-          Vec<D> xs = xi;
-          xs[0] += ox * box.len[0];
-          xs[1] += oy * box.len[1];
-          for (int s = 0; s < seg.count; ++s)
-            g += shepard_gamma_segment(xs, load<D>(seg.a, s), load<D>(seg.b, s), load<D>(seg.n_in, s), R);
-        }
-    }
-    if constexpr (D == 2) g = shepard_gamma_from_sum(g);
-    else g = 1.0;
+    double sum = 0.0;  // sum of the facets' terms; gamma from shepard_gamma_from_sum
+    for_each_facet_near<D>(cells, box, load<D>(x, i), [&](const int s, const Vec<D>& xs) { sum += facet_gamma<D>(xs, facets(s), R); });
+    const double g = shepard_gamma_from_sum(sum);
     gamma(i) = g < 1e-3 ? 1e-3 : (g > 1.0 ? 1.0 : g);
-  }
-  void run(int n) const {
-    Kokkos::parallel_for("ondine::NFM::shepard_gamma", Kokkos::RangePolicy<ExecSpace>(0, n), *this);
   }
 };
 

@@ -26,7 +26,7 @@ as_root() {
 packages=(build-essential cmake pkg-config dpkg-dev xz-utils
           libeigen3-dev libyaml-cpp-dev catch2
           openmpi-bin libopenmpi-dev libhdf5-openmpi-dev hdf5-tools
-          libcli11-dev nlohmann-json3-dev
+          libcli11-dev nlohmann-json3-dev libassimp-dev
           python3-matplotlib python3-numpy)
 missing=()
 for p in "${packages[@]}"; do

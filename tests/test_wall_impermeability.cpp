@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "kernels/WallImpermeability.hpp"
+#include "solver/WallModel.hpp"
 
 using namespace ondine;
 
@@ -15,7 +16,7 @@ namespace {
 // The floor y = 0 (x from 0 to 1) and the left wall x = 0 (y from 0 to 1) of a tank:
 // n_in = (0, 1) and (1, 0). Wall 0 moves with `floor_velocity`.
 struct Guard {
-  WallSegments<2> seg;
+  WallFacets<2> seg;
   Kokkos::View<double* [2], Kokkos::LayoutLeft, MemSpace> wall_velocity{"wv", 2};
   field_view_t<field::Position, 2> x0{"x0", 1}, x{"x", 1};
   field_view_t<field::Velocity, 2> u{"u", 1};
@@ -41,7 +42,7 @@ struct Guard {
     for (int k = 0; k < 2; ++k) { h0(0, k) = p0[k]; h1(0, k) = p1[k]; hu(0, k) = v[k]; }
     Kokkos::deep_copy(x0, h0); Kokkos::deep_copy(x, h1); Kokkos::deep_copy(u, hu);
     PeriodicBox<2> box{{0, 0}, {2, 2}, {false, false}};
-    const long c = WallImpermeability<2>{seg, wall_velocity, dt, box, x0, x, u}.run(1);
+    const long c = WallImpermeability<2>{seg, make_facet_cells<2>(box, 0.5, seg), wall_velocity, dt, box, x0, x, u}.run(1);
     Kokkos::deep_copy(h1, x); Kokkos::deep_copy(hu, u);
     p_out = {h1(0, 0), h1(0, 1)};
     v_out = {hu(0, 0), hu(0, 1)};

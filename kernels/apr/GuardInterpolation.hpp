@@ -262,7 +262,7 @@ struct GuardApply {
   // NFM walls (count 0 without): a guard is not integrated, so no wall term keeps it
   // in the fluid; within dx_l / 2 of a wall segment the part of its interpolated
   // velocity that points into the wall is removed (no penetration).
-  WallSegments<D> seg;
+  WallFacets<D> seg;
   RefinementZones<D> zones;
   field_view_t<field::Position, D> x;
   field_view_t<field::AprBirthLevel, D> birth;

@@ -83,7 +83,7 @@ struct GuardSpacing {
   RefinementZones<D> zones;
   UnitKernel W1;      // the scene's kernel at radius 1: W(r, R) = W1(r / R) / R^D
   double R, dx;       // R_r, dx_r
-  WallSegments<D> seg;
+  WallFacets<D> seg;
   WallPoints<D> wall;        // read with Walls only
   CellList<D> wall_cells;    // the wall points binned at R_r
   field_view_t<field::Position, D> x;

@@ -252,7 +252,7 @@ struct DaughterFill {
 // (5.22), so the family's momentum is unchanged; the shift is below dx_m/2.
 template <int D>
 struct DaughterWallClearance {
-  WallSegments<D> seg;
+  WallFacets<D> seg;
   PeriodicBox<D> box;
   RefinementZones<D> zones;
   Kokkos::View<int*, MemSpace> refining, kept_index;

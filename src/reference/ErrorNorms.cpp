@@ -7,23 +7,44 @@
 
 namespace ondine {
 
+namespace {
+
+// the volume enclosed by a closed triangle mesh (divergence theorem), m^3
+double mesh_volume(const WallMesh& m) {
+  double v6 = 0;
+  for (const auto& t : m.triangles) {
+    const Vec3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
+    v6 += a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+  }
+  return std::abs(v6) / 6.0;
+}
+
+}  // namespace
+
+// The worst relative error of the force on the closed bodies wholly below the free surface
+// (reference.origin + length along the vertical axis, y in 2D, z in 3D) against Archimedes'
+// -rho0 g V (V the polygon's area in 2D, the mesh's volume in 3D); -1 without such a body.
 double buoyancy_error(const Scene& scene, const std::vector<WallForce>& forces) {
-  const double surface = scene.reference.origin[1] + scene.reference.length;
+  const int D = scene.dimension, up = D - 1;
+  const double surface = scene.reference.origin[up] + scene.reference.length;
   double worst = -1;
   for (const Wall& w : scene.walls) {
     bool below = w.closed && !w.fluid_inside;
     for (const auto& pt : w.points) below = below && pt[1] < surface;
+    for (const auto& v : w.mesh.vertices) below = below && v[2] < surface;
     if (!below) continue;
-    const double A = reference::polygon_area(w.points);
-    const double gn = std::hypot(scene.gravity[0], scene.gravity[1]);
+    const double V = D == 2 ? reference::polygon_area(w.points) : mesh_volume(w.mesh);
+    double gn = 0;
+    for (int k = 0; k < D; ++k) gn += scene.gravity[k] * scene.gravity[k];
+    gn = std::sqrt(gn);
     for (const WallForce& f : forces) {
       if (f.name != w.name) continue;
       double e2 = 0;
-      for (int k = 0; k < 2; ++k) {
-        const double d = f.pressure[k] + f.viscous[k] + scene.rho0 * scene.gravity[k] * A;
+      for (int k = 0; k < D; ++k) {
+        const double d = f.pressure[k] + f.viscous[k] + scene.rho0 * scene.gravity[k] * V;
         e2 += d * d;
       }
-      worst = std::max(worst, std::sqrt(e2) / (scene.rho0 * gn * A));
+      worst = std::max(worst, std::sqrt(e2) / (scene.rho0 * gn * V));
     }
   }
   return worst;

@@ -202,10 +202,11 @@ void hydrostatic(const Simulation<D>& sim, const Diagnostics& d, std::map<std::s
   auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::Position{}));
   auto hP = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::Pressure{}));
   auto hm = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::Mass{}));
-  const double g = std::abs(scene.gravity[1]), H = ref.length, z0 = ref.origin[1];
+  constexpr int up = D - 1;  // the vertical axis: y in 2D, z in 3D
+  const double g = std::abs(scene.gravity[up]), H = ref.length, z0 = ref.origin[up];
   double worst = 0, pe = 0;
   for (int i = 0; i < n; ++i) {
-    const double z = hx(i, 1) - z0;
+    const double z = hx(i, up) - z0;
     pe += hm(i) * g * z;
     if (H - z < 3 * scene.dx) continue;
     worst = std::max(worst, std::abs(hP(i) - scene.rho0 * g * (H - z)));
@@ -214,6 +215,31 @@ void hydrostatic(const Simulation<D>& sim, const Diagnostics& d, std::map<std::s
   pe = comm.sum(pe);
   e["pressure_linf"] = worst / (scene.rho0 * g * H);
   e["kinetic_over_potential"] = d.kinetic_energy / pe;
+}
+
+// laminar square-duct flow (reference.type duct, 3D): u_x against the start-up series
+// solution at the run's time, relative L2 over the particles
+template <int D>
+void duct(const Simulation<D>& sim, std::map<std::string, double>& e) {
+  if constexpr (D == 3) {
+    const Scene& scene = sim.scene();
+    const Reference& ref = scene.reference;
+    const int n = static_cast<int>(sim.size());
+    auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::Position{}));
+    auto hu = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::Velocity{}));
+    const double L = ref.length, F = scene.body_force[0] + scene.gravity[0];
+    double num = 0, den = 0;
+    for (int i = 0; i < n; ++i) {  // a host loop at the end of a run (a diagnostic)
+      const double y = std::min(std::max(hx(i, 1) - ref.origin[1], 0.0), L);
+      const double z = std::min(std::max(hx(i, 2) - ref.origin[2], 0.0), L);
+      const double ue = reference::duct_startup(y, z, sim.time(), L, F, scene.nu);
+      num += (hu(i, 0) - ue) * (hu(i, 0) - ue);
+      den += ue * ue;
+    }
+    num = sim.comm().sum(num);
+    den = sim.comm().sum(den);
+    e["velocity_l2"] = std::sqrt(num / den);
+  }
 }
 
 }  // namespace errors
@@ -231,6 +257,7 @@ std::map<std::string, double> reference_errors(const Simulation<D>& sim) {
     case ReferenceKind::GhiaRe100:
     case ReferenceKind::GhiaRe1000: errors::cavity(sim, e); break;
     case ReferenceKind::Hydrostatic: errors::hydrostatic(sim, d, e); break;
+    case ReferenceKind::Duct: errors::duct(sim, e); break;
     default: break;
   }
   return e;

@@ -20,6 +20,26 @@ double poiseuille_startup(double y, double t, double L, double F, double nu) {
   return u;
 }
 
+double duct_startup(double y, double z, double t, double L, double F, double nu) {
+  double u = F / (2 * nu) * y * (L - y);
+  for (int n = 1; n < 400; n += 2) {
+    // cosh(a) / cosh(b) as exp(|a| - b) (1 + exp(-2|a|)) / (1 + exp(-2b)): no overflow for large n
+    const double a = std::abs(n * M_PI * (z - 0.5 * L) / L), b = n * M_PI / 2;
+    const double ratio = std::exp(a - b) * (1 + std::exp(-2 * a)) / (1 + std::exp(-2 * b));
+    const double term = 4 * F * L * L / (nu * M_PI * M_PI * M_PI * n * n * n) * std::sin(n * M_PI * y / L) * ratio;
+    u -= term;
+    if (4 * F * L * L / (nu * M_PI * M_PI * M_PI * n * n * n) * ratio < 1e-16 * (1 + std::abs(u)) && n > 20) break;
+  }
+  for (int m = 1; m < 400; m += 2)
+    for (int n = 1; n < 400; n += 2) {
+      const double decay = std::exp(-(m * m + n * n) * M_PI * M_PI * nu * t / (L * L));
+      if (decay < 1e-18) break;  // smaller still for larger n
+      u -= 16 * F * L * L / (nu * std::pow(M_PI, 4) * m * n * (m * m + n * n)) * std::sin(m * M_PI * y / L) *
+           std::sin(n * M_PI * z / L) * decay;
+    }
+  return u;
+}
+
 double couette_startup(double y, double t, double L, double V0, double nu) {
   double u = V0 * y / L;
   // the n-th term is bounded by 2 V0 / (n pi) exp(-n^2 pi^2 nu t / L^2): stop once that bound is

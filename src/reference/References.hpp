@@ -25,6 +25,14 @@ double couette_startup(double y, double t, double L, double V0, double nu);
 // gravity along x, or couette_startup with V0 = reference.velocity.
 double channel_startup(const Scene& s, double y, double t);
 
+// Start-up laminar flow along x in a square duct 0 < y, z < L driven by a body force F
+// (the double sine series of nu lap u = -F with u = 0 on the walls):
+//   u(y, z, t) = F/(2 nu) y (L - y) - sum_{n odd} 4 F L^2 / (nu pi^3 n^3) sin(n pi y / L)
+//                  cosh(n pi (z - L/2) / L) / cosh(n pi / 2)                                  (steady)
+//              - sum_{m, n odd} 16 F L^2 / (nu pi^4 m n (m^2 + n^2)) sin(m pi y / L) sin(n pi z / L)
+//                  exp(-(m^2 + n^2) pi^2 nu t / L^2)                                          (transient)
+double duct_startup(double y, double z, double t, double L, double F, double nu);
+
 // Martin & Moyce (1952), n^2 = 2, Table 2: surge front Z = x/a against T = t sqrt(2 g / a)
 // (cases/reference/martin_moyce1952_front_n2_2.csv gives the source chain of these digits).
 const std::vector<std::pair<double, double>>& martin_moyce_front();

@@ -77,15 +77,19 @@ void read_reference(const Reader& r, YAML::Node& root, Scene& s) {
   if (const YAML::Node rf = root["reference"]) {
     r.only_keys(rf, "reference", {"type", "length", "origin", "velocity"});
     const std::string t = r.word(r.required(rf, "reference", "type"), "reference.type",
-                                 {"poiseuille", "couette", "hydrostatic", "martin_moyce", "ghia_re100", "ghia_re1000"});
-    s.reference.kind = t == "poiseuille" ? ReferenceKind::Poiseuille
+                                 {"poiseuille", "couette", "hydrostatic", "martin_moyce", "ghia_re100", "ghia_re1000", "duct"});
+    s.reference.kind = t == "duct"         ? ReferenceKind::Duct
+                       : t == "poiseuille" ? ReferenceKind::Poiseuille
                        : t == "couette" ? ReferenceKind::Couette
                        : t == "hydrostatic" ? ReferenceKind::Hydrostatic
                        : t == "martin_moyce" ? ReferenceKind::MartinMoyce
                        : t == "ghia_re100" ? ReferenceKind::GhiaRe100 : ReferenceKind::GhiaRe1000;
     s.reference.length = r.positive(r.required(rf, "reference", "length"), "reference.length", " (m)");
     if (rf["origin"]) s.reference.origin = r.vector(rf["origin"], "reference.origin", D, " (m)");
-    if (D != 2) r.fail(rf, "reference", "these references are 2D");
+    if (D != 2 && s.reference.kind != ReferenceKind::Hydrostatic && s.reference.kind != ReferenceKind::Duct)
+      r.fail(rf["type"], "reference.type", "in 3D hydrostatic or duct (the other references are 2D)");
+    if (D != 3 && s.reference.kind == ReferenceKind::Duct) r.fail(rf["type"], "reference.type", "duct is a 3D reference");
+    if (s.reference.kind == ReferenceKind::Duct && !(s.nu > 0)) r.fail(rf["type"], "reference.type", "duct needs fluid.viscosity > 0");
     if ((s.reference.kind == ReferenceKind::Poiseuille || s.reference.kind == ReferenceKind::Couette) && !(s.nu > 0))
       r.fail(rf["type"], "reference.type", t + " needs fluid.viscosity > 0");
     if (s.reference.kind == ReferenceKind::Couette)

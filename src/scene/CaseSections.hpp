@@ -33,6 +33,12 @@ void read_fluid_blocks(const Reader& r, YAML::Node& root, Scene& s);
 // CaseWalls.cpp: NFM walls (and the kernel they need); `path` is the case file's,
 // which wall files are relative to
 void read_walls(const Reader& r, YAML::Node& root, const std::string& path, Scene& s);
+// CaseWalls3d.cpp: the keys of one dimension's walls refused in the other (before the
+// unknown-key check, for a message that says what that dimension expects), and a 3D
+// wall's mesh (geometry, placement, checks, orientation into the fluid)
+void refuse_wall_keys_of_other_dimension(const Reader& r, const YAML::Node& w, const std::string& key, int D);
+void read_wall_mesh(const Reader& r, const YAML::Node& w, const std::string& key, const std::string& path, const Scene& s,
+                    Wall& wall);
 
 // CaseObservers.cpp: what a run measures and compares with
 void read_probes(const Reader& r, YAML::Node& root, Scene& s);

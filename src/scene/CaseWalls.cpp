@@ -88,16 +88,9 @@ void read_wall_motion(const Reader& r, const YAML::Node& m, const std::string& k
   }
 }
 
-// one entry of walls, checked against the walls before it
-Wall read_wall(const Reader& r, const YAML::Node& w, std::size_t i, const std::string& path, const Scene& s) {
-  const std::string key = "walls[" + std::to_string(i) + "]";
-  r.only_keys(w, key, {"name", "points", "file", "closed", "fluid_side", "condition", "motion"});
-  Wall wall;
-  wall.name = w["name"] ? r.text(w["name"], key + ".name", "a wall name") : "wall" + std::to_string(i);
-  if (wall.name.find_first_of(", \"") != std::string::npos)
-    r.fail(w["name"], key + ".name", "expected a name without commas, spaces or quotes (it heads CSV columns)");
-  for (const Wall& o : s.walls)
-    if (o.name == wall.name) r.fail(w["name"] ? w["name"] : w, key + ".name", "duplicate wall name '" + wall.name + "'");
+// a 2D wall: its points, closed or not, and the side of the fluid
+void read_wall_polyline(const Reader& r, const YAML::Node& w, const std::string& key, const std::string& path, const Scene& s,
+                        Wall& wall) {
   read_wall_points(r, w, key, path, wall);
   if (w["closed"]) wall.closed = r.boolean(w["closed"], key + ".closed");
   check_wall_shape(r, w, key, s, wall);
@@ -109,6 +102,28 @@ Wall read_wall(const Reader& r, const YAML::Node& w, std::size_t i, const std::s
     r.fail(w, key + ".fluid_side", wall.closed ? "required for a closed wall: inside (a tank) or outside (a body)"
                                                : "required for an open wall: left or right of the direction of its points");
   }
+}
+
+// one entry of walls, checked against the walls before it: a polyline in 2D, a
+// triangle mesh in 3D (CaseWalls3d.cpp)
+Wall read_wall(const Reader& r, const YAML::Node& w, std::size_t i, const std::string& path, const Scene& s) {
+  const std::string key = "walls[" + std::to_string(i) + "]";
+  refuse_wall_keys_of_other_dimension(r, w, key, s.dimension);
+  if (s.dimension == 2)
+    r.only_keys(w, key, {"name", "points", "file", "closed", "fluid_side", "condition", "motion"});
+  else
+    r.only_keys(w, key, {"name", "box", "rectangle", "prism", "cylinder", "stl", "units", "scale", "rotate", "translate",
+                         "fluid_side", "condition", "motion"});
+  Wall wall;
+  wall.name = w["name"] ? r.text(w["name"], key + ".name", "a wall name") : "wall" + std::to_string(i);
+  if (wall.name.find_first_of(", \"") != std::string::npos)
+    r.fail(w["name"], key + ".name", "expected a name without commas, spaces or quotes (it heads CSV columns)");
+  for (const Wall& o : s.walls)
+    if (o.name == wall.name) r.fail(w["name"] ? w["name"] : w, key + ".name", "duplicate wall name '" + wall.name + "'");
+  if (s.dimension == 3)
+    read_wall_mesh(r, w, key, path, s, wall);
+  else
+    read_wall_polyline(r, w, key, path, s, wall);
   if (w["condition"])
     wall.condition = r.word(w["condition"], key + ".condition", {"no_slip", "slip"}) == "slip" ? WallCondition::Slip : WallCondition::NoSlip;
   if (const YAML::Node m = w["motion"]) read_wall_motion(r, m, key, s.dimension, wall);
@@ -117,12 +132,10 @@ Wall read_wall(const Reader& r, const YAML::Node& w, std::size_t i, const std::s
 
 }  // namespace
 
-// walls (NFM, 2D polylines)
+// walls (NFM: 2D polylines, 3D triangle meshes)
 void read_walls(const Reader& r, YAML::Node& root, const std::string& path, Scene& s) {
-  const int D = s.dimension;
   if (const YAML::Node ws = root["walls"]) {
     if (!ws.IsSequence()) r.fail(ws, "walls", "expected a list of walls");
-    if (D != 2 && ws.size() > 0) r.fail(ws, "walls", "NFM walls are implemented in 2D only so far");
     for (std::size_t i = 0; i < ws.size(); ++i) s.walls.push_back(read_wall(r, ws[i], i, path, s));
   }
   const YAML::Node disc = root["discretisation"];

@@ -37,11 +37,20 @@ struct FluidBlock {
 enum class WallMotion { Fixed, Sliding, Translation, Oscillation };
 enum class WallCondition { NoSlip, Slip };
 
+// A 3D wall: a triangle mesh in metres (after units, scaling, rotation and translation),
+// each triangle ordered so that (v1 - v0) x (v2 - v0) points into the fluid (n_in).
+struct WallMesh {
+  std::vector<std::array<double, 3>> vertices;
+  std::vector<std::array<int, 3>> triangles;
+  std::string source;  // what it was built from, for messages: "box", "cylinder", "stl 'tank.stl'"...
+};
+
 struct Wall {
   std::string name;
-  std::vector<std::array<double, 2>> points;  // vertices, in order
-  bool closed = false;
-  bool fluid_inside = true;  // closed: fluid inside the polygon; open: fluid on the left of a->b
+  std::vector<std::array<double, 2>> points;  // 2D: vertices, in order
+  WallMesh mesh;                              // 3D: the triangles
+  bool closed = false;       // 2D: a closed polygon; 3D: a closed surface (a tank, a body)
+  bool fluid_inside = true;  // closed: fluid inside; open 2D: fluid on the left of a->b (3D open: unused, the triangles' order tells)
   WallCondition condition = WallCondition::NoSlip;
   WallMotion motion = WallMotion::Fixed;
   Vec3 velocity{0, 0, 0};   // sliding: surface velocity; translation: body velocity (m/s)
@@ -50,10 +59,10 @@ struct Wall {
 };
 
 // The analytic or experimental reference a case is compared with (errors in summary.json).
-enum class ReferenceKind { None, Poiseuille, Couette, Hydrostatic, MartinMoyce, GhiaRe100, GhiaRe1000 };
+enum class ReferenceKind { None, Poiseuille, Couette, Hydrostatic, MartinMoyce, GhiaRe100, GhiaRe1000, Duct };
 struct Reference {
   ReferenceKind kind = ReferenceKind::None;
-  double length = 0;  // poiseuille: channel height L; hydrostatic: water depth H; martin_moyce: column width a; ghia: cavity side (m)
+  double length = 0;  // poiseuille: channel height L; hydrostatic: water depth H; martin_moyce: column width a; ghia: cavity side; duct: side (m)
   Vec3 origin{0, 0, 0};  // poiseuille, couette: bottom wall point; hydrostatic: tank bottom; martin_moyce: back wall at the floor (m)
   double velocity = 0;   // couette: speed along x of the wall at y = origin + length, from t = 0 (m/s)
 };
@@ -141,7 +150,8 @@ struct Scene {
 
   // time and output
   double duration = 0.0;         // s
-  double output_interval = 0.0;  // s
+  double output_interval = 0.0;  // s: the time series (probes, gauges, walls, diagnostics)
+  int snapshot_every = 1;        // a snapshot at every n-th output instant (and the last)
   std::int64_t max_steps = -1;   // -1: no limit
   double damping_time = 0;       // s: initial relaxation, u *= exp(-dt / (damping_time / 10)) while t < damping_time
   std::vector<Probe> probes;

@@ -179,7 +179,7 @@ class AdaptiveRefinement {
   // depend on the rank count). Families next to a wall are moved off it (`walls`).
   // Returns the new owned count (halos dropped).
   int update(ParticleSet<D>& p, const CellList<D>& cells, const PeriodicBox<D>& box, int n, const Communicator& comm,
-             const WallSegments<D>& walls = WallSegments<D>()) {
+             const WallFacets<D>& walls = WallFacets<D>()) {
     Kokkos::View<int*, MemSpace> action("ondine::APR::action", n), kept_index("ondine::APR::kept_index", n),
         refine_index("ondine::APR::refine_index", n);
     // the mother flags before this pass (a deleted mother takes its daughters along)
@@ -287,7 +287,7 @@ class AdaptiveRefinement {
   // The shape functions are recomputed when invalidated (a new step, new lists) and
   // always with `passive`.
   void interpolate(ParticleSet<D>& p, const PeriodicBox<D>& box, bool passive = false,
-                   const WallSegments<D>& walls = WallSegments<D>()) {
+                   const WallFacets<D>& walls = WallFacets<D>()) {
     Kokkos::Timer timer;
     if (passive || !weights_valid_) {
       with_kernel<D>(kernel_, 1.0, [&](auto W1) {

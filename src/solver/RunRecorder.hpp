@@ -74,9 +74,10 @@ class RunRecorder {
 
   // One output instant: the snapshot and a row of every series. Returns the diagnostics
   // (d.finite false: the state is no longer finite).
-  Diagnostics record(Simulation<D>& sim, double last_dt) {
+  // snapshot false: the series only (time.snapshot_every > 1).
+  Diagnostics record(Simulation<D>& sim, double last_dt, bool snapshot = true) {
     const OutputFrame<D> frame(sim);  // until the end of this call
-    snapshots_.write(sim.particles(), sim.time(), sim.steps(), static_cast<std::int64_t>(sim.size()));
+    if (snapshot) snapshots_.write(sim.particles(), sim.time(), sim.steps(), static_cast<std::int64_t>(sim.size()));
     if (sim.has_walls()) {
       const auto forces = sim.wall_forces();
       walls_.text() << sim.time() << "," << sim.steps();

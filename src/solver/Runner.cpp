@@ -246,8 +246,10 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
       break;
     }
     if (sim.time() >= next_output * (1 - 1e-12)) {
+      // a snapshot at every snapshot_every-th output instant and at the end
+      const bool snapshot = output_index % scene.snapshot_every == 0 || sim.time() >= scene.duration * (1 - 1e-12);
       ++output_index;
-      if (!recorder.record(sim, last_dt).finite) {
+      if (!recorder.record(sim, last_dt, snapshot).finite) {
         report.status = "diverged";
         break;
       }
@@ -281,7 +283,7 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
   report.cpu_seconds = static_cast<double>(std::clock() - timing.cpu0) / CLOCKS_PER_SEC;
   if (!diverged) report.errors = reference_errors(sim);
   recorder.add_figures(report.errors, sim.diagnostics().mass, diverged);
-  if (D == 2 && scene.reference.kind == ReferenceKind::Hydrostatic && sim.has_walls() && !diverged) {
+  if (scene.reference.kind == ReferenceKind::Hydrostatic && sim.has_walls() && !diverged) {
     const double worst = buoyancy_error(scene, sim.wall_forces());
     if (worst >= 0) report.errors["buoyancy_error"] = worst;
   }

@@ -40,7 +40,7 @@ struct PassContext {
   field_view_t<field::FreeSurface, D> free_surface;
   // walls
   WallPoints<D> wall;
-  WallSegments<D> segments;
+  WallFacets<D> facets;  // segments (2D) or triangles (3D)
   LaplacianWeightView<D> weights;  // the consistent Laplacian's, next to no-slip walls
   WallEos eos;
   double nu = 0, rho0 = 0;

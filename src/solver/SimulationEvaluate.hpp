@@ -19,7 +19,8 @@ namespace ondine {
 template <int D>
 void Simulation<D>::update_walls(double t) {
   if (walls_.moving()) walls_.move_to(t);
-  region_.seg = walls_.segments();
+  region_.facets = walls_.facets();
+  region_.cells = walls_.facet_cells();
 }
 
 // Viscous flows along no-slip walls take the consistent Laplacian (kernels/ConsistentLaplacian.hpp).
@@ -95,7 +96,7 @@ PassContext<D> Simulation<D>::pass_context(const LevelSpan<D>& L) const {
   take(c.drho, field::DensityRate{});
   take(c.free_surface, field::FreeSurface{});
   c.wall = walls_.points();
-  c.segments = walls_.segments();
+  c.facets = walls_.facets();
   c.weights = laplacian_weights_;
   c.eos = wall_eos();
   c.nu = scene_.nu;
@@ -119,7 +120,7 @@ void Simulation<D>::evaluate() {
   const bool walls = !walls_.empty();
   if (walls) update_walls(stage_time_);
   if (apr_on_) {
-    apr_.interpolate(p_, domain_.box(), false, walls_.segments());  // guards from this stage's SPH particles (5.24)
+    apr_.interpolate(p_, domain_.box(), false, walls_.facets());  // guards from this stage's SPH particles (5.24)
     // several ranks: the guards' halo copies (their density gradient travels after the gradient pass)
     domain_.refresh(p_, field::Velocity{}, field::Density{});
     if (walls && (walls_.moving() || level_wall_cells_.empty())) build_level_wall_cells();
@@ -137,7 +138,7 @@ void Simulation<D>::evaluate() {
     if (L.active_end == L.first) continue;
     const auto range = Kokkos::RangePolicy<ExecSpace>(L.first, L.active_end);
     if (walls)
-      Kokkos::parallel_for("ondine::NFM::shepard_gamma", range, ShepardGammaPass<D>{walls_.segments(), L.R, domain_.box(), a.x, gamma});
+      Kokkos::parallel_for("ondine::NFM::shepard_gamma", range, ShepardGammaPass<D>{walls_.facets(), walls_.facet_cells(), L.R, domain_.box(), a.x, gamma});
     if (gradient) scheme_.density_gradient(pass_context(L));
   }
   // with zones the guards' density gradient came with their interpolation (GuardInterpolation.hpp)

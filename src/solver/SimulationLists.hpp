@@ -104,11 +104,11 @@ void Simulation<D>::refinement_bookkeeping() {
     domain_.refresh(p_, field::AprBirthLevel{});
   }
   domain_.build_cells(p_.get(field::Position{}), static_cast<int>(p_.size()));  // for the prolongation gradient
-  n_own_ = apr_.update(p_, domain_.cells(), domain_.box(), n_own_, comm(), walls_.segments());
+  n_own_ = apr_.update(p_, domain_.cells(), domain_.box(), n_own_, comm(), walls_.facets());
   domain_.invalidate_lists();
   bookkeeping_due_ = false;
   rebuild_lists(true, true);
-  apr_.interpolate(p_, domain_.box(), true, walls_.segments());  // passive guards: once per bookkeeping
+  apr_.interpolate(p_, domain_.box(), true, walls_.facets());  // passive guards: once per bookkeeping
   refresh_guard_halos();
 }
 
@@ -242,7 +242,7 @@ long Simulation<D>::space_guards() {
     const double Rl = apr_.R(l);
     if (walls && daughters && l > 0)
       Kokkos::parallel_for("ondine::NFM::ShepardGamma", Kokkos::RangePolicy<ExecSpace>(b, e),
-                           ShepardGammaPass<D>{walls_.segments(), Rl, domain_.box(), x, p_.get(field::ShepardGamma{})});
+                           ShepardGammaPass<D>{walls_.facets(), walls_.facet_cells(), Rl, domain_.box(), x, p_.get(field::ShepardGamma{})});
     PassContext<D> c = pass_context(spans[l]);
     c.first = b;  // the level's guards
     c.end = e;

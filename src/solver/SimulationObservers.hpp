@@ -227,7 +227,7 @@ void Simulation<D>::prepare_output() {
     if (p_.has(field::DensityGradient{})) keep(saved_grad_rho_, p_.get(field::DensityGradient{}));
     apr_.save_wide_flags();
     output_saved_ = true;
-    apr_.interpolate(p_, domain_.box(), true, walls_.segments());  // the guards of the stored state (5.24)
+    apr_.interpolate(p_, domain_.box(), true, walls_.facets());  // the guards of the stored state (5.24)
     refresh_guard_halos();
   }
   const int n = static_cast<int>(p_.size());
@@ -266,7 +266,7 @@ void Simulation<D>::update_free_surface() {
     if (L.active_end == L.first) continue;
     if (walls)
       Kokkos::parallel_for("ondine::NFM::shepard_gamma", Kokkos::RangePolicy<ExecSpace>(L.first, L.end),
-                           ShepardGammaPass<D>{walls_.segments(), L.R, domain_.box(), x, p_.get(field::ShepardGamma{})});
+                           ShepardGammaPass<D>{walls_.facets(), walls_.facet_cells(), L.R, domain_.box(), x, p_.get(field::ShepardGamma{})});
     if (!flags) continue;
     scheme_.free_surface(pass_context(L));
   }

@@ -100,16 +100,18 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
   }
 }
 
-// The fluid region of the walls (kernels/FluidRegion.hpp): the segments, and the closed
-// walls as segment ranges with the side the fluid is on (a host loop over walls).
+// The fluid region of the walls (kernels/FluidRegion.hpp): the facets, and the closed
+// walls as facet ranges with the side the fluid is on (a host loop over walls).
 template <int D>
 void Simulation<D>::build_fluid_region() {
-  region_.seg = walls_.segments();
+  region_.facets = walls_.facets();
+  region_.cells = walls_.facet_cells();
+  region_.box = domain_.box();
   region_.behind = scene_.dx;
   std::vector<int> first, count, inside;
   int s0 = 0;
   for (const Wall& w : scene_.walls) {
-    const int ns = static_cast<int>(w.closed ? w.points.size() : w.points.size() - 1);
+    const int ns = static_cast<int>(D == 3 ? w.mesh.triangles.size() : (w.closed ? w.points.size() : w.points.size() - 1));
     if (w.closed) {
       first.push_back(s0);
       count.push_back(ns);
@@ -131,27 +133,30 @@ void Simulation<D>::build_fluid_region() {
 // Refuses a fill whose fluid lies on the solid side of a wall (walls[i].fluid_side the
 // wrong way round, or the points in the reverse order), which would start, blow up at the
 // first step and leave snapshots behind: the particles within R of each wall are counted
-// on either side of its segments (kernels/FluidRegion.hpp), and a wall with more fluid
+// on either side of its facets (kernels/FluidRegion.hpp), and a wall with more fluid
 // behind it than in front is named. A wall with fluid on both sides at equal counts (two
 // tanks back to back) passes.
 template <int D>
 void Simulation<D>::check_wall_sides() {
-  if constexpr (D != 2) return;
   const int nw = static_cast<int>(scene_.walls.size());
   Kokkos::View<long* [2], Kokkos::LayoutRight, MemSpace> count("ondine::NFM::wall_side_count", nw);
   Kokkos::parallel_for("ondine::NFM::wall_side_count", Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(p_.size())),
-                       WallSideCount<D>{walls_.segments(), R_, p_.get(field::Position{}), count});
+                       WallSideCount<D>{walls_.facets(), walls_.facet_cells(), domain_.box(), R_, p_.get(field::Position{}), count});
   auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), count);
   for (int w = 0; w < nw; ++w) {
     const std::int64_t front = comm().sum(static_cast<std::int64_t>(h(w, 0))), behind = comm().sum(static_cast<std::int64_t>(h(w, 1)));
     if (behind <= front) continue;
     const Wall& wall = scene_.walls[static_cast<std::size_t>(w)];
-    const char* side = wall.closed ? (wall.fluid_inside ? "inside" : "outside") : (wall.fluid_inside ? "left" : "right");
-    const char* other = wall.closed ? (wall.fluid_inside ? "outside" : "inside") : (wall.fluid_inside ? "right" : "left");
+    // open walls: left/right of the points (2D), front/back of the triangles' normals (3D)
+    const char* open_side[2][2] = {{"right", "left"}, {"back", "front"}};
+    const int in = wall.fluid_inside ? 1 : 0;
+    const char* side = wall.closed ? (in ? "inside" : "outside") : open_side[D == 3][in];
+    const char* other = wall.closed ? (in ? "outside" : "inside") : open_side[D == 3][1 - in];
+    const char* how = wall.closed ? "" : (D == 2 ? " (walking along its points)" : " (of its triangles' normals)");
     throw std::invalid_argument(scene_.source_file + ": walls[" + std::to_string(w) + "] ('" + wall.name + "'): " +
                                 std::to_string(behind) + " fluid particles lie within R of it on its solid side and " +
                                 std::to_string(front) + " on its fluid side; with fluid_side: " + side +
-                                " the fluid must be on the " + side + " of the wall (walking along its points for an open wall): "
+                                " the fluid must be on the " + side + " of the wall" + how + ": "
                                 "expected fluid_side: " + other + ", or the fluid blocks on the other side");
   }
 }

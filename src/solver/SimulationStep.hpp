@@ -128,7 +128,7 @@ double Simulation<D>::step(double t_stop) {
   if (!walls_.empty()) {
     // kernels/WallImpermeability.hpp: particles found behind a wall at the end of the step
     update_walls(t_ + dt);
-    const long c = WallImpermeability<D>{walls_.segments(), walls_.wall_velocity(), dt, domain_.box(), p_.get(field::StagePosition{}),
+    const long c = WallImpermeability<D>{walls_.facets(), walls_.facet_cells(), walls_.wall_velocity(), dt, domain_.box(), p_.get(field::StagePosition{}),
                                          p_.get(field::Position{}), p_.get(field::Velocity{})}
                        .run(n_own_);
     if (c > 0) domain_.halos_stale();

@@ -1,7 +1,10 @@
 #include "solver/WallModel.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "geometry/TriangleQuadrature.hpp"
 
 namespace ondine {
 
@@ -32,62 +35,99 @@ void motion(const Wall& w, double t, double* disp, double* vel) {
   }
 }
 
+
+// The facets and quadrature points of each wall, flattened (D coordinates per vertex or point).
+struct HostWalls {
+  std::vector<double> a, b, c, n_in;  // facets: vertices (c in 3D) and normal into the fluid
+  std::vector<int> facet_wall;
+  std::vector<double> qx, qn, qs;     // points: position, n_out, element length or area
+  std::vector<int> qwall, qslip;
+};
+
+// 2D: each polyline's segments, each cut into elements no longer than hq with a midpoint point.
+void add_polyline(const Wall& wall, int w, double hq, HostWalls& h) {
+  const std::size_t np = wall.points.size();
+  // orientation: a closed polygon's signed area tells on which side its inside lies
+  double area2 = 0;
+  for (std::size_t k = 0; k < np; ++k) {
+    const auto& a = wall.points[k];
+    const auto& b = wall.points[(k + 1) % np];
+    area2 += a[0] * b[1] - b[0] * a[1];
+  }
+  // n_in = left normal of a->b for fluid on the left (open) or inside a counter-clockwise polygon
+  bool left = wall.fluid_inside;
+  if (wall.closed && area2 < 0) left = !left;
+  const std::size_t nseg = wall.closed ? np : np - 1;
+  for (std::size_t k = 0; k < nseg; ++k) {
+    const auto& a = wall.points[k];
+    const auto& b = wall.points[(k + 1) % np];
+    const double tx = b[0] - a[0], ty = b[1] - a[1], len = std::hypot(tx, ty);
+    const double nx = (left ? -ty : ty) / len, ny = (left ? tx : -tx) / len;  // n_in
+    h.a.insert(h.a.end(), {a[0], a[1]});
+    h.b.insert(h.b.end(), {b[0], b[1]});
+    h.n_in.insert(h.n_in.end(), {nx, ny});
+    h.facet_wall.push_back(w);
+    const int m = std::max(1, static_cast<int>(std::ceil(len / hq)));
+    for (int e = 0; e < m; ++e) {
+      const double f = (e + 0.5) / m;
+      h.qx.insert(h.qx.end(), {a[0] + f * tx, a[1] + f * ty});
+      h.qn.insert(h.qn.end(), {-nx, -ny});  // n_out = -n_in
+      h.qs.push_back(len / m);
+      h.qwall.push_back(w);
+      h.qslip.push_back(wall.condition == WallCondition::NoSlip ? 1 : 0);
+    }
+  }
+}
+
+// 3D: each triangle (ordered with (v1 - v0) x (v2 - v0) into the fluid by the parser), with
+// the points of its clipped quadrature (§4.4, geometry/TriangleQuadrature.hpp) at spacing hq.
+void add_mesh(const Wall& wall, int w, double hq, HostWalls& h) {
+  const auto& V = wall.mesh.vertices;
+  for (const auto& t : wall.mesh.triangles) {
+    const Vec3 &p0 = V[t[0]], &p1 = V[t[1]], &p2 = V[t[2]];
+    const Vec3 e1{p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]}, e2{p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]};
+    Vec3 n{e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (double& v : n) v /= len;
+    h.a.insert(h.a.end(), p0.begin(), p0.end());
+    h.b.insert(h.b.end(), p1.begin(), p1.end());
+    h.c.insert(h.c.end(), p2.begin(), p2.end());
+    h.n_in.insert(h.n_in.end(), n.begin(), n.end());
+    h.facet_wall.push_back(w);
+    for (const WallQuadraturePoint& q : clip_quadrature(p0, p1, p2, hq)) {
+      h.qx.insert(h.qx.end(), q.x.begin(), q.x.end());
+      h.qn.insert(h.qn.end(), {-n[0], -n[1], -n[2]});
+      h.qs.push_back(q.area);
+      h.qwall.push_back(w);
+      h.qslip.push_back(wall.condition == WallCondition::NoSlip ? 1 : 0);
+    }
+  }
+}
+
 }  // namespace
 
 template <int D>
 WallModel<D>::WallModel(const Scene& scene, const PeriodicBox<D>& box, double cutoff)
     : walls_(scene.walls), box_(box), cutoff_(cutoff) {
   if (walls_.empty()) return;
-  if (D != 2) throw std::invalid_argument("NFM walls are implemented in 2D only");
-  const double hq = scene.wall_quadrature_spacing > 0 ? scene.wall_quadrature_spacing : scene.dx / 4;
-  std::vector<double> sa, sb, sn;  // segments, flattened (x, y)
-  std::vector<int> swall;
-  std::vector<double> qx, qn, qs;
-  std::vector<int> qwall, qslip;
+  const double hq = scene.wall_quadrature_spacing > 0 ? scene.wall_quadrature_spacing
+                                                      : (D == 2 ? scene.dx / 4 : kWallQuadratureSpacing3D * scene.dx);
+  HostWalls h;
   for (std::size_t w = 0; w < walls_.size(); ++w) {
     const Wall& wall = walls_[w];
     names_.push_back(wall.name);
     moving_ = moving_ || wall.motion == WallMotion::Translation || wall.motion == WallMotion::Oscillation ||
               wall.motion == WallMotion::Sliding;
-    const std::size_t np = wall.points.size();
-    // orientation: a closed polygon's signed area tells on which side its inside lies
-    double area2 = 0;
-    for (std::size_t k = 0; k < np; ++k) {
-      const auto& a = wall.points[k];
-      const auto& b = wall.points[(k + 1) % np];
-      area2 += a[0] * b[1] - b[0] * a[1];
-    }
-    // n_in = left normal of a->b for fluid on the left (open) or inside a counter-clockwise polygon
-    bool left = wall.fluid_inside;
-    if (wall.closed && area2 < 0) left = !left;
-    const std::size_t nseg = wall.closed ? np : np - 1;
-    for (std::size_t k = 0; k < nseg; ++k) {
-      const auto& a = wall.points[k];
-      const auto& b = wall.points[(k + 1) % np];
-      const double tx = b[0] - a[0], ty = b[1] - a[1], len = std::hypot(tx, ty);
-      const double nx = (left ? -ty : ty) / len, ny = (left ? tx : -tx) / len;  // n_in
-      sa.insert(sa.end(), {a[0], a[1]});
-      sb.insert(sb.end(), {b[0], b[1]});
-      sn.insert(sn.end(), {nx, ny});
-      swall.push_back(static_cast<int>(w));
-      const int m = std::max(1, static_cast<int>(std::ceil(len / hq)));
-      for (int e = 0; e < m; ++e) {
-        const double f = (e + 0.5) / m;
-        qx.insert(qx.end(), {a[0] + f * tx, a[1] + f * ty});
-        qn.insert(qn.end(), {-nx, -ny});  // n_out = -n_in
-        qs.push_back(len / m);
-        qwall.push_back(static_cast<int>(w));
-        qslip.push_back(wall.condition == WallCondition::NoSlip ? 1 : 0);
-      }
-    }
+    if constexpr (D == 2) add_polyline(wall, static_cast<int>(w), hq, h);
+    else add_mesh(wall, static_cast<int>(w), hq, h);
   }
   auto to_device_vec = [](const std::vector<double>& v, const std::string& label) {
     const int n = static_cast<int>(v.size() / D);
     Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> d(label, n);
-    auto h = Kokkos::create_mirror_view(d);
+    auto hv = Kokkos::create_mirror_view(d);
     for (int i = 0; i < n; ++i)
-      for (int k = 0; k < D; ++k) h(i, k) = v[D * i + k];
-    Kokkos::deep_copy(d, h);
+      for (int k = 0; k < D; ++k) hv(i, k) = v[D * i + k];
+    Kokkos::deep_copy(d, hv);
     return d;
   };
   auto to_device = [](const auto& v, const std::string& label) {
@@ -96,28 +136,149 @@ WallModel<D>::WallModel(const Scene& scene, const PeriodicBox<D>& box, double cu
     Kokkos::deep_copy(d, Kokkos::View<const T*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(v.data(), v.size()));
     return d;
   };
-  segments_.a = to_device_vec(sa, "ondine::NFM::segment_a");
-  segments_.b = to_device_vec(sb, "ondine::NFM::segment_b");
-  segments_.n_in = to_device_vec(sn, "ondine::NFM::segment_n_in");
-  segments_.wall = to_device(swall, "ondine::NFM::segment_wall");
-  segments_.count = static_cast<int>(swall.size());
-  points_.x = to_device_vec(qx, "ondine::NFM::point_x");
-  points_.n_out = to_device_vec(qn, "ondine::NFM::point_n_out");
-  points_.u = decltype(points_.u)("ondine::NFM::point_u", qs.size());
-  points_.s = to_device(qs, "ondine::NFM::point_s");
-  points_.wall = to_device(qwall, "ondine::NFM::point_wall");
-  points_.no_slip = to_device(qslip, "ondine::NFM::point_no_slip");
-  points_.count = static_cast<int>(qs.size());
+  facets_.a = to_device_vec(h.a, "ondine::NFM::facet_a");
+  facets_.b = to_device_vec(h.b, "ondine::NFM::facet_b");
+  if (D == 3) facets_.c = to_device_vec(h.c, "ondine::NFM::facet_c");
+  facets_.n_in = to_device_vec(h.n_in, "ondine::NFM::facet_n_in");
+  facets_.wall = to_device(h.facet_wall, "ondine::NFM::facet_wall");
+  facets_.count = static_cast<int>(h.facet_wall.size());
+  host_a_ = h.a;
+  host_b_ = h.b;
+  host_c_ = h.c;
+  host_facet_wall_ = h.facet_wall;
+  points_.x = to_device_vec(h.qx, "ondine::NFM::point_x");
+  points_.n_out = to_device_vec(h.qn, "ondine::NFM::point_n_out");
+  points_.u = decltype(points_.u)("ondine::NFM::point_u", h.qs.size());
+  points_.s = to_device(h.qs, "ondine::NFM::point_s");
+  points_.wall = to_device(h.qwall, "ondine::NFM::point_wall");
+  points_.no_slip = to_device(h.qslip, "ondine::NFM::point_no_slip");
+  points_.count = static_cast<int>(h.qs.size());
   wall_velocity_ = decltype(wall_velocity_)("ondine::NFM::wall_velocity", walls_.size());
   if (moving_) {
-    seg_a0_ = decltype(seg_a0_)("ondine::NFM::segment_a0", segments_.count);
-    seg_b0_ = decltype(seg_b0_)("ondine::NFM::segment_b0", segments_.count);
+    seg_a0_ = decltype(seg_a0_)("ondine::NFM::facet_a0", facets_.count);
+    seg_b0_ = decltype(seg_b0_)("ondine::NFM::facet_b0", facets_.count);
+    seg_c0_ = decltype(seg_c0_)("ondine::NFM::facet_c0", D == 3 ? facets_.count : 0);
     x0_ = decltype(x0_)("ondine::NFM::point_x0", points_.count);
-    Kokkos::deep_copy(seg_a0_, segments_.a);
-    Kokkos::deep_copy(seg_b0_, segments_.b);
+    Kokkos::deep_copy(seg_a0_, facets_.a);
+    Kokkos::deep_copy(seg_b0_, facets_.b);
+    if (D == 3) Kokkos::deep_copy(seg_c0_, facets_.c);
     Kokkos::deep_copy(x0_, points_.x);
   }
+  std::vector<double> no_disp(walls_.size() * D, 0.0);
+  build_facet_cells(no_disp);
   move_to(0.0);
+}
+
+// The facet cells (kernels/WallSet.hpp) of facets (a, b, c: D coordinates per vertex, c empty
+// in 2D; wall: the wall of each) displaced by disp (D per wall): a host loop over the facets
+// and their periodic images, twice (count, then fill), so that each cell lists its entries by
+// image, then facet.
+template <int D>
+FacetCells<D> make_facet_cells(const PeriodicBox<D>& box_, double cutoff_, const std::vector<double>& host_a_,
+                               const std::vector<double>& host_b_, const std::vector<double>& host_c_,
+                               const std::vector<int>& host_facet_wall_, const std::vector<double>& disp) {
+  const CellGrid<D> g = make_cell_grid(box_, cutoff_);
+  const int ncell = g.cells();
+  const double reach = cutoff_ * (1.0 + 1e-9);
+  std::vector<int> start(static_cast<std::size_t>(ncell) + 1, 0), facet, image;
+  std::vector<int> cursor;
+  int images = 1;
+  for (int k = 0; k < D; ++k) images *= 3;
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass == 1) {
+      for (int c = 0; c < ncell; ++c) start[c + 1] += start[c];
+      facet.resize(start[ncell]);
+      image.resize(start[ncell]);
+      cursor.assign(start.begin(), start.end() - 1);
+    }
+    // images in the order of nested loops over axes, the first axis outermost
+    for (int m = 0; m < images; ++m) {
+      int o[D], code = 0, rest = m, weight = 1;
+      bool used = true;
+      for (int k = D - 1; k >= 0; --k) {
+        o[k] = rest % 3 - 1;
+        rest /= 3;
+        if (o[k] != 0 && !box_.periodic[k]) used = false;
+      }
+      if (!used) continue;
+      for (int k = 0; k < D; ++k, weight *= 3) code += (o[k] + 1) * weight;
+      for (int s = 0; s < static_cast<int>(host_facet_wall_.size()); ++s) {
+        int lo[D], hi[D];
+        bool empty = false;
+        for (int k = 0; k < D; ++k) {
+          const double d = disp[D * host_facet_wall_[s] + k] - o[k] * box_.len[k];
+          double vmin = host_a_[D * s + k], vmax = vmin;
+          for (const std::vector<double>* v : {&host_b_, &host_c_})
+            if (!v->empty()) {
+              vmin = std::min(vmin, (*v)[D * s + k]);
+              vmax = std::max(vmax, (*v)[D * s + k]);
+            }
+          const double fl = std::floor((vmin + d - reach - g.lo[k]) * g.inv_size[k]);
+          const double fh = std::floor((vmax + d + reach - g.lo[k]) * g.inv_size[k]);
+          if (g.periodic[k]) {  // cells beyond the box belong to another image
+            lo[k] = static_cast<int>(std::max(fl, 0.0));
+            hi[k] = static_cast<int>(std::min(fh, g.n[k] - 1.0));
+            if (lo[k] > hi[k]) empty = true;
+          } else {  // an edge cell also holds the particles beyond the box
+            lo[k] = static_cast<int>(std::min(std::max(fl, 0.0), g.n[k] - 1.0));
+            hi[k] = static_cast<int>(std::min(std::max(fh, 0.0), g.n[k] - 1.0));
+          }
+        }
+        if (empty) continue;
+        int c[D];
+        for (int k = 0; k < D; ++k) c[k] = lo[k];
+        while (true) {
+          const int idx = g.linear(c);
+          if (pass == 0) {
+            ++start[idx + 1];
+          } else {
+            facet[cursor[idx]] = s;
+            image[cursor[idx]++] = code;
+          }
+          int k = 0;
+          while (k < D && ++c[k] > hi[k]) {
+            c[k] = lo[k];
+            ++k;
+          }
+          if (k == D) break;
+        }
+      }
+    }
+  }
+  auto to_device = [](const std::vector<int>& v, const std::string& label) {
+    Kokkos::View<int*, MemSpace> d(label, v.size());
+    Kokkos::deep_copy(d, Kokkos::View<const int*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(v.data(), v.size()));
+    return d;
+  };
+  FacetCells<D> cells;
+  cells.grid = g;
+  cells.start = to_device(start, "ondine::NFM::facet_cell_start");
+  cells.facet = to_device(facet, "ondine::NFM::facet_cell_facet");
+  cells.image = to_device(image, "ondine::NFM::facet_cell_image");
+  return cells;
+}
+
+template <int D>
+FacetCells<D> make_facet_cells(const PeriodicBox<D>& box, double cutoff, const WallFacets<D>& f) {
+  auto host = [&](const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& v) {
+    std::vector<double> out;
+    if (v.extent(0) == 0) return out;
+    auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), v);
+    for (int s = 0; s < f.count; ++s)
+      for (int k = 0; k < D; ++k) out.push_back(h(s, k));
+    return out;
+  };
+  auto hw = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), f.wall);
+  std::vector<int> wall(hw.data(), hw.data() + f.count);
+  int walls = 0;
+  for (int w : wall) walls = std::max(walls, w + 1);
+  return make_facet_cells<D>(box, cutoff, host(f.a), host(f.b), D == 3 ? host(f.c) : std::vector<double>(), wall,
+                             std::vector<double>(static_cast<std::size_t>(walls) * D, 0.0));
+}
+
+template <int D>
+void WallModel<D>::build_facet_cells(const std::vector<double>& disp) {
+  facet_cells_ = make_facet_cells<D>(box_, cutoff_, host_a_, host_b_, host_c_, host_facet_wall_, disp);
 }
 
 template <int D>
@@ -129,12 +290,15 @@ void WallModel<D>::move_to(double t) {
     Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> disp("ondine::NFM::wall_disp", nw), vel("ondine::NFM::wall_vel", nw);
     auto hd = Kokkos::create_mirror_view(disp);
     auto hv = Kokkos::create_mirror_view(vel);
+    std::vector<double> flat(static_cast<std::size_t>(nw) * D);
+    bool displaced = false;
     for (int w = 0; w < nw; ++w) {
       double d3[3], v3[3];
       motion(walls_[w], t, d3, v3);
       for (int k = 0; k < D; ++k) {
-        hd(w, k) = d3[k];
+        hd(w, k) = flat[D * w + k] = d3[k];
         hv(w, k) = v3[k];
+        displaced = displaced || d3[k] != 0.0;
       }
     }
     Kokkos::deep_copy(disp, hd);
@@ -148,19 +312,24 @@ void WallModel<D>::move_to(double t) {
         pu(q, k) = vel(pw(q), k);
       }
     });
-    const auto a = segments_.a, b = segments_.b, a0 = seg_a0_, b0 = seg_b0_;
-    const auto sw = segments_.wall;
-    Kokkos::parallel_for("ondine::NFM::move_segments", Kokkos::RangePolicy<ExecSpace>(0, segments_.count), KOKKOS_LAMBDA(const int s) {
+    const auto a = facets_.a, b = facets_.b, c = facets_.c, a0 = seg_a0_, b0 = seg_b0_, c0 = seg_c0_;
+    const auto sw = facets_.wall;
+    Kokkos::parallel_for("ondine::NFM::move_facets", Kokkos::RangePolicy<ExecSpace>(0, facets_.count), KOKKOS_LAMBDA(const int s) {
       for (int k = 0; k < D; ++k) {
         a(s, k) = a0(s, k) + disp(sw(s), k);
         b(s, k) = b0(s, k) + disp(sw(s), k);
+        if (D == 3) c(s, k) = c0(s, k) + disp(sw(s), k);
       }
     });
+    if (displaced || facets_moved_) build_facet_cells(flat);
+    facets_moved_ = displaced;
   }
   cells_.build(make_cell_grid(box_, cutoff_), points_.x, points_.count);
 }
 
 template class WallModel<2>;
 template class WallModel<3>;
+template FacetCells<2> make_facet_cells<2>(const PeriodicBox<2>&, double, const WallFacets<2>&);
+template FacetCells<3> make_facet_cells<3>(const PeriodicBox<3>&, double, const WallFacets<3>&);
 
 }  // namespace ondine

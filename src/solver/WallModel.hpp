@@ -1,9 +1,10 @@
 #pragma once
-// Host-side owner of the NFM walls: builds the segments and the midpoint
-// quadrature points from the scene's polylines (each segment cut into elements
-// no longer than the quadrature spacing, dx/4 by default, independent of the
-// segment length), moves them rigidly for translating or oscillating walls, and
-// keeps a cell list of the quadrature points for the particle-wall sums.
+// Host-side owner of the NFM walls: builds the facets and the quadrature points, from the
+// scene's polylines in 2D (each segment cut into elements no longer than the quadrature
+// spacing, dx/4 by default, independent of the segment length) and from its triangle meshes
+// in 3D (each triangle's clipped quadrature, §4.4, at kWallQuadratureSpacing3D dx by
+// default); moves them rigidly for translating or oscillating walls; and keeps a cell list of
+// the quadrature points for the particle-wall sums and the facets binned by cell.
 #include <string>
 #include <vector>
 
@@ -12,6 +13,9 @@
 #include "scene/Scene.hpp"
 
 namespace ondine {
+
+// The default spacing of the 3D wall quadrature, in dx (geometry/TriangleQuadrature.hpp).
+constexpr double kWallQuadratureSpacing3D = 0.5;
 
 template <int D>
 class WallModel {
@@ -22,7 +26,8 @@ class WallModel {
   bool empty() const { return points_.count == 0; }
   int wall_count() const { return static_cast<int>(names_.size()); }
   const std::vector<std::string>& names() const { return names_; }
-  const WallSegments<D>& segments() const { return segments_; }
+  const WallFacets<D>& facets() const { return facets_; }
+  const FacetCells<D>& facet_cells() const { return facet_cells_; }
   const WallPoints<D>& points() const { return points_; }
   const CellList<D>& cells() const { return cells_; }
   // rigid velocity of each wall at the last move_to (zero for fixed walls)
@@ -34,14 +39,24 @@ class WallModel {
  private:
   std::vector<Wall> walls_;
   std::vector<std::string> names_;
-  WallSegments<D> segments_;
+  void build_facet_cells(const std::vector<double>& disp);
+
+  WallFacets<D> facets_;
+  FacetCells<D> facet_cells_;
+  std::vector<double> host_a_, host_b_, host_c_;  // the facets at rest, for the facet cells
+  std::vector<int> host_facet_wall_;
+  bool facets_moved_ = false;                      // the facet cells hold displaced facets
   WallPoints<D> points_;
-  Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> seg_a0_, seg_b0_, x0_, wall_velocity_;
+  Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> seg_a0_, seg_b0_, seg_c0_, x0_, wall_velocity_;
   CellList<D> cells_;
   PeriodicBox<D> box_;
   double cutoff_ = 0;
   bool moving_ = false;
 };
+
+// The facet cells of facets at rest, for a cut-off (tests and tools; WallModel keeps its own).
+template <int D>
+FacetCells<D> make_facet_cells(const PeriodicBox<D>& box, double cutoff, const WallFacets<D>& facets);
 
 extern template class WallModel<2>;
 extern template class WallModel<3>;

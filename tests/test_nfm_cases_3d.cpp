@@ -1,0 +1,130 @@
+// NFM walls in 3D at CI resolution (cases/*_3d.yaml with coarser overrides where noted; the
+// full-resolution runs belong to the validation suite): the fill against a box tank, an
+// obstacle and an STL tank, still water, the buoyancy of an immersed body and a laminar duct.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <unistd.h>
+
+#include "reference/ErrorNorms.hpp"
+#include "reference/References.hpp"
+#include "scene/CaseFile.hpp"
+#include "solver/Simulation.hpp"
+#include "test_helpers.hpp"
+
+using namespace ondine;
+
+namespace {
+const std::string src = ONDINE_SOURCE_DIR;
+
+Simulation<3> run_case(const std::string& name, const std::vector<std::string>& sets) {
+  Simulation<3> sim(load_case(src + "/cases/" + name, sets));
+  const double T = sim.scene().duration;
+  while (sim.time() < T * (1 - 1e-12)) sim.step(T);
+  return sim;
+}
+}  // namespace
+
+TEST_CASE("3D fill: a box tank keeps its whole lattice, an obstacle box removes its own", "[nfm3d][fill]") {
+  // 1 x 1 x 1 m of water at dx = 0.1 in the 1 x 1 x 2 tank: 10^3 points, none within dx/2 of a wall
+  Simulation<3> tank(load_case(src + "/cases/hydrostatic_tank_3d.yaml", {"discretisation.dx=0.1"}));
+  CHECK(tank.size() == 1000);
+  CHECK(tank.wall_leaks(0.5 * 0.1 * (1 - 1e-6)) == 0);
+  // 1 x 1 x 0.8 m of water at dx = 0.05 (20 x 20 x 16) less the 0.2 m cube's 4 x 4 x 4 points
+  Simulation<3> body(load_case(src + "/cases/immersed_box_3d.yaml"));
+  CHECK(body.size() == 20 * 20 * 16 - 64);
+  CHECK(body.wall_leaks(0.5 * 0.05 * (1 - 1e-6)) == 0);
+}
+
+TEST_CASE("3D walls: the Shepard factor of a still tank's particles is the analytical one", "[nfm3d][gamma]") {
+  // at rest on the lattice, a particle at distance d from one face (and farther than R from
+  // the others) has gamma = 1 - (1 - q)^6 (1 + 3q + 3q^2) / 2, q = d / R (nfm.md §7)
+  Simulation<3> sim(load_case(src + "/cases/hydrostatic_tank_3d.yaml", {"discretisation.dx=0.1"}));
+  sim.update_free_surface();
+  const auto& p = sim.particles();
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Position{}));
+  auto g = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::ShepardGamma{}));
+  const double R = sim.R();
+  int checked = 0;
+  double worst = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double d = x(i, 2);  // distance to the floor
+    bool far = d < R;
+    for (int k = 0; k < 2; ++k) far = far && x(i, k) > R && x(i, k) < 1 - R;
+    if (!far) continue;
+    const double q = d / R;
+    worst = std::max(worst, std::abs(g(i) - (1 - 0.5 * std::pow(1 - q, 6) * (1 + 3 * q + 3 * q * q))));
+    ++checked;
+  }
+  INFO(checked << " particles, worst " << worst);
+  CHECK(checked > 0);
+  CHECK(worst < 1e-9);
+}
+
+TEST_CASE("3D hydrostatic tank (coarse): pressure profile, rest and no leak", "[nfm3d][case][hydrostatic]") {
+  // dx = 0.1 m: R = 0.25 m is a quarter of the tank, 10 layers of water. The worst particles are
+  // those of the vertical edges of the tank, measured 6.7 % low (the layers' means within 2.5 %);
+  // the thesis' resolution (dx = 0.04 m, 5 s undamped) is a validation case
+  // (ondine validate --case hydrostatic_tank_3d). The bounds are regression guards.
+  Simulation<3> sim = run_case("hydrostatic_tank_3d.yaml", {"discretisation.dx=0.1", "time.duration=1.0", "time.damping=0.5"});
+  const auto e = reference_errors(sim);
+  INFO("pressure_linf " << e.at("pressure_linf") << ", Ek/Ep " << e.at("kinetic_over_potential"));
+  CHECK(e.at("pressure_linf") < 0.08);
+  CHECK(e.at("kinetic_over_potential") < 1e-3);
+  CHECK(sim.wall_leaks() == 0);
+  // the force on the tank is the weight of the water (1000 x 9.81 x 1 m^3): measured 2.5 % low
+  const auto f = sim.wall_forces();
+  REQUIRE(f.size() == 1);
+  INFO("force on the tank " << f[0].pressure[0] << ", " << f[0].pressure[1] << ", " << f[0].pressure[2]);
+  CHECK(f[0].pressure[2] == Approx(-9810.0).epsilon(0.04));
+  CHECK(std::abs(f[0].pressure[0]) < 2e-3 * 9810);
+  CHECK(std::abs(f[0].pressure[1]) < 2e-3 * 9810);
+}
+
+TEST_CASE("3D walls from an STL file: the same Shepard factor as the box primitive", "[nfm3d][stl]") {
+  // cases/meshes/tank_1x1x2.stl is the 1 x 1 x 2 box with its faces cut along the other
+  // diagonals: the analytical gamma must not depend on the triangulation (to round-off)
+  Simulation<3> box(load_case(src + "/cases/hydrostatic_tank_3d.yaml", {"discretisation.dx=0.1"}));
+  Simulation<3> stl(load_case(src + "/cases/hydrostatic_tank_stl_3d.yaml", {"discretisation.dx=0.1"}));
+  REQUIRE(box.size() == stl.size());
+  box.update_free_surface();
+  stl.update_free_surface();
+  auto gb = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), box.particles().get(field::ShepardGamma{}));
+  auto gs = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), stl.particles().get(field::ShepardGamma{}));
+  double worst = 0, lowest = 1;
+  for (std::size_t i = 0; i < box.size(); ++i) {
+    worst = std::max(worst, std::abs(gb(i) - gs(i)));
+    lowest = std::min(lowest, gb(i));
+  }
+  INFO("worst difference " << worst << ", lowest gamma " << lowest);
+  CHECK(worst < 1e-12);
+  CHECK(lowest < 0.5);  // the corner particles, 0.2 R from three faces, see the edges and corners of the mesh
+}
+
+TEST_CASE("3D free surface: the top layer of a still tank is flagged, nothing along the walls", "[nfm3d][free_surface]") {
+  Simulation<3> sim(load_case(src + "/cases/hydrostatic_tank_3d.yaml", {"discretisation.dx=0.1"}));
+  sim.update_free_surface();
+  const auto& p = sim.particles();
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Position{}));
+  auto fs = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::FreeSurface{}));
+  int top = 0, wrong = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const bool top_layer = x(i, 2) > 1.0 - 0.1;
+    if (top_layer && fs(i) > 0.5) ++top;
+    if (!top_layer && x(i, 2) < 1.0 - 0.25 && fs(i) > 0.5) ++wrong;  // below the surface's support
+  }
+  INFO(top << " of 100 top-layer particles flagged, " << wrong << " flagged deeper");
+  CHECK(top == 100);
+  CHECK(wrong == 0);
+}
+
+TEST_CASE("Laminar square duct (L/10): velocity against the series solution after 3 s", "[nfm3d][case][duct]") {
+  // measured 6.9e-3 at L/10 (docs/validation.md: about second order over L/10, L/15, L/20)
+  Simulation<3> sim = run_case("duct_3d.yaml", {"discretisation.dx=0.1"});
+  const auto e = reference_errors(sim);
+  INFO("velocity_l2 " << e.at("velocity_l2"));
+  CHECK(e.at("velocity_l2") < 1e-2);
+  CHECK(sim.wall_leaks() == 0);
+}
