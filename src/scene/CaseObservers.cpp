@@ -1,10 +1,32 @@
 #include <vector>
 
+#include <algorithm>
+
+#include "reference/SensorSeries.hpp"
 #include "scene/CaseSections.hpp"
 
 namespace ondine::case_file {
 
 namespace {
+
+// spheric_test2: the measured series (read now, so that a bad file stops the run before it
+// starts) and the sensors it is compared with: probes P1 and P3, gauges H2 and H4
+void read_spheric_reference(const Reader& r, const YAML::Node& rf, Scene& s) {
+  const std::string rel = r.text(r.required(rf, "reference", "file"), "reference.file", "the CSV of the measured series");
+  const auto slash = s.source_file.find_last_of('/');
+  s.reference.file = (!rel.empty() && rel[0] == '/') || slash == std::string::npos ? rel : s.source_file.substr(0, slash + 1) + rel;
+  try {
+    reference::read_sensor_csv(s.reference.file, {"P1", "P3", "H2", "H4"});
+  } catch (const std::exception& e) {
+    r.fail(rf["file"], "reference.file", e.what());
+  }
+  for (const char* p : {"P1", "P3"})
+    if (std::none_of(s.probes.begin(), s.probes.end(), [&](const Probe& q) { return q.name == p; }))
+      r.fail(rf["type"], "reference.type", std::string("spheric_test2 compares the probe named ") + p + ": add it to probes");
+  for (const char* h : {"H2", "H4"})
+    if (std::none_of(s.wave_gauges.begin(), s.wave_gauges.end(), [&](const WaveGauge& g) { return g.name == h; }))
+      r.fail(rf["type"], "reference.type", std::string("spheric_test2 compares the wave gauge named ") + h + ": add it to wave_gauges");
+}
 
 // the name of a probe or gauge: it heads CSV columns, so no separators, and unique
 std::string csv_column_name(const Reader& r, const YAML::Node& item, const std::string& key, const std::string& what,
@@ -75,10 +97,12 @@ void read_wave_gauges(const Reader& r, YAML::Node& root, Scene& s) {
 void read_reference(const Reader& r, YAML::Node& root, Scene& s) {
   const int D = s.dimension;
   if (const YAML::Node rf = root["reference"]) {
-    r.only_keys(rf, "reference", {"type", "length", "origin", "velocity"});
+    r.only_keys(rf, "reference", {"type", "length", "origin", "velocity", "file"});
     const std::string t = r.word(r.required(rf, "reference", "type"), "reference.type",
-                                 {"poiseuille", "couette", "hydrostatic", "martin_moyce", "ghia_re100", "ghia_re1000", "duct"});
+                                 {"poiseuille", "couette", "hydrostatic", "martin_moyce", "ghia_re100", "ghia_re1000", "duct",
+                                  "spheric_test2"});
     s.reference.kind = t == "duct"         ? ReferenceKind::Duct
+                       : t == "spheric_test2" ? ReferenceKind::SphericTest2
                        : t == "poiseuille" ? ReferenceKind::Poiseuille
                        : t == "couette" ? ReferenceKind::Couette
                        : t == "hydrostatic" ? ReferenceKind::Hydrostatic
@@ -86,8 +110,12 @@ void read_reference(const Reader& r, YAML::Node& root, Scene& s) {
                        : t == "ghia_re100" ? ReferenceKind::GhiaRe100 : ReferenceKind::GhiaRe1000;
     s.reference.length = r.positive(r.required(rf, "reference", "length"), "reference.length", " (m)");
     if (rf["origin"]) s.reference.origin = r.vector(rf["origin"], "reference.origin", D, " (m)");
-    if (D != 2 && s.reference.kind != ReferenceKind::Hydrostatic && s.reference.kind != ReferenceKind::Duct)
-      r.fail(rf["type"], "reference.type", "in 3D hydrostatic or duct (the other references are 2D)");
+    if (D != 2 && s.reference.kind != ReferenceKind::Hydrostatic && s.reference.kind != ReferenceKind::Duct &&
+        s.reference.kind != ReferenceKind::SphericTest2)
+      r.fail(rf["type"], "reference.type", "in 3D hydrostatic, duct or spheric_test2 (the other references are 2D)");
+    if (D != 3 && s.reference.kind == ReferenceKind::SphericTest2) r.fail(rf["type"], "reference.type", "spheric_test2 is a 3D reference");
+    if (s.reference.kind == ReferenceKind::SphericTest2) read_spheric_reference(r, rf, s);
+    else if (rf["file"]) r.fail(rf["file"], "reference.file", "only a spheric_test2 reference takes a file");
     if (D != 3 && s.reference.kind == ReferenceKind::Duct) r.fail(rf["type"], "reference.type", "duct is a 3D reference");
     if (s.reference.kind == ReferenceKind::Duct && !(s.nu > 0)) r.fail(rf["type"], "reference.type", "duct needs fluid.viscosity > 0");
     if ((s.reference.kind == ReferenceKind::Poiseuille || s.reference.kind == ReferenceKind::Couette) && !(s.nu > 0))

@@ -13,6 +13,7 @@
 
 #include "io/SnapshotWriter.hpp"
 #include "reference/References.hpp"
+#include "reference/SensorSeries.hpp"
 #include "solver/RunOutput.hpp"
 #include "solver/Simulation.hpp"
 
@@ -66,6 +67,12 @@ class RunRecorder {
       }
     probes_.resume(t_start);
     waves_.resume(t_start);
+    for (const auto& row : probes_.resumed_rows())  // the series a reference compares
+      for (std::size_t k = 0; k < scene_.probes.size(); ++k)
+        if (row.size() > 2 + k * (2 + D)) keep_sensor(scene_.probes[k].name, row[0], row[2 + k * (2 + D)]);
+    for (const auto& row : waves_.resumed_rows())
+      for (std::size_t k = 0; k < scene_.wave_gauges.size(); ++k)
+        if (row.size() > 2 + k) keep_sensor(scene_.wave_gauges[k].name, row[0], row[2 + k]);
     walls_.resume(t_start);
     if (dam_break() && front_.resume(t_start * front_time_scale()))
       for (const auto& row : front_.resumed_rows())
@@ -103,6 +110,7 @@ class RunRecorder {
                  << "," << sim.balance() << "\n";
     if (!scene_.probes.empty()) {
       const auto samples = sim.sample_probes();
+      for (std::size_t k = 0; k < samples.size(); ++k) keep_sensor(scene_.probes[k].name, sim.time(), samples[k].pressure);
       probes_.text() << sim.time() << "," << sim.steps();
       for (const ProbeSample& s : samples) {
         probes_.text() << "," << s.pressure << "," << s.density;
@@ -113,6 +121,7 @@ class RunRecorder {
     }
     if (!scene_.wave_gauges.empty()) {
       const auto levels = sim.wave_elevations();
+      for (std::size_t k = 0; k < levels.size(); ++k) keep_sensor(scene_.wave_gauges[k].name, sim.time(), levels[k]);
       waves_.text() << sim.time() << "," << sim.steps();
       for (double z : levels) waves_.text() << "," << z;
       waves_.text() << "\n";
@@ -147,10 +156,20 @@ class RunRecorder {
     errors["non_finite"] = diverged ? 1.0 : 0.0;
     if (dam_break() && !diverged)
       for (const auto& [k, v] : reference::martin_moyce_errors(front_points_)) errors[k] = v;
+    if (scene_.reference.kind == ReferenceKind::SphericTest2 && !diverged) {
+      const auto measured = reference::read_sensor_csv(scene_.reference.file, {"P1", "P3", "H2", "H4"});
+      for (const auto& [k, v] : reference::spheric_test2_errors(measured, sensors_, scene_.reference.length, scene_.duration))
+        errors[k] = v;
+    }
   }
 
  private:
   bool dam_break() const { return scene_.reference.kind == ReferenceKind::MartinMoyce; }
+  // the series a reference compares (spheric_test2: P1, P3, H2, H4), kept in memory
+  void keep_sensor(const std::string& name, double t, double v) {
+    if (scene_.reference.kind != ReferenceKind::SphericTest2) return;
+    if (name == "P1" || name == "P3" || name == "H2" || name == "H4") sensors_[name].emplace_back(t, v);
+  }
   // T = t sqrt(2 g / a), Martin & Moyce's time
   double front_time_scale() const { return std::sqrt(2 * std::abs(scene_.gravity[1]) / scene_.reference.length); }
 
@@ -158,6 +177,7 @@ class RunRecorder {
   SnapshotWriter snapshots_;
   CsvSeries diag_, probes_, walls_, front_, waves_;
   std::vector<std::pair<double, double>> front_points_;  // (T, Z)
+  std::map<std::string, reference::Series> sensors_;     // spheric_test2: (t, value) of its sensors
   double max_rho_dev_ = 0, max_ke_ = 0;
   std::int64_t max_outside_ = 0;
 };
