@@ -107,4 +107,26 @@ struct WallTractionSum {
   }
 };
 
+// component k of the moment about c of the traction of wall `which`'s points:
+// sum_q (x_q - c) x (F_pressure + F_viscous)_q (2D: the z component only, k = 2)
+template <int D>
+struct WallMomentSum {
+  Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace> traction;
+  Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> x;
+  Kokkos::View<int*, MemSpace> wall;
+  Kokkos::View<int*, MemSpace> counted;
+  int which, component;
+  double c[3];
+  KOKKOS_INLINE_FUNCTION void operator()(const int q, double& M) const {
+    if (wall(q) != which || !counted(q)) return;
+    double r[3] = {0, 0, 0}, f[3] = {0, 0, 0};
+    for (int k = 0; k < D; ++k) {
+      r[k] = x(q, k) - c[k];
+      f[k] = traction(q, k) + traction(q, D + k);
+    }
+    const int a = (component + 1) % 3, b = (component + 2) % 3;
+    M += r[a] * f[b] - r[b] * f[a];
+  }
+};
+
 }  // namespace ondine

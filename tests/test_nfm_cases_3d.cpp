@@ -81,6 +81,12 @@ TEST_CASE("3D hydrostatic tank (coarse): pressure profile, rest and no leak", "[
   CHECK(f[0].pressure[2] == Approx(-9810.0).epsilon(0.04));
   CHECK(std::abs(f[0].pressure[0]) < 2e-3 * 9810);
   CHECK(std::abs(f[0].pressure[1]) < 2e-3 * 9810);
+  // its moment about the origin: the weight acts at (0.5, 0.5) and the side walls' pushes cancel,
+  // M = (0.5 F_z, -0.5 F_z, 0)
+  INFO("moment " << f[0].moment[0] << ", " << f[0].moment[1] << ", " << f[0].moment[2]);
+  CHECK(f[0].moment[0] == Approx(0.5 * f[0].pressure[2]).epsilon(0.01));
+  CHECK(f[0].moment[1] == Approx(-0.5 * f[0].pressure[2]).epsilon(0.01));
+  CHECK(std::abs(f[0].moment[2]) < 2e-3 * 9810);
 }
 
 TEST_CASE("3D walls from an STL file: the same Shepard factor as the box primitive", "[nfm3d][stl]") {

@@ -5,9 +5,11 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
 
 #include "reference/ErrorNorms.hpp"
 #include "reference/References.hpp"
+#include "reference/SensorSeries.hpp"
 #include "test_helpers.hpp"
 
 using namespace ondine;
@@ -128,4 +130,34 @@ TEST_CASE("Error norms: a channel whose velocity is the start-up profile has no 
   e = reference_errors(sim);
   CHECK(e.at("velocity_l2") == Approx(0.01).epsilon(1e-3));
   CHECK(e.at("velocity_l2_near_wall") == Approx(0.01).epsilon(1e-3));
+}
+
+TEST_CASE("SPHERIC Test 2 errors: peaks, their times and level RMS against a known offset", "[unit][reference]") {
+  using reference::Series;
+  // a measured impact: a triangle peak of 10 kPa at 0.41 s on P1, 5 kPa at 0.42 s on P3;
+  // levels H2 = 0.1 t, H4 = 0.55 - 0.1 t
+  std::map<std::string, Series> measured, sim;
+  for (int k = 0; k <= 2000; ++k) {
+    const double t = k * 1e-3;
+    measured["P1"].emplace_back(t, std::max(0.0, 1e4 * (1 - std::abs(t - 0.41) / 0.02)));
+    measured["P3"].emplace_back(t, std::max(0.0, 5e3 * (1 - std::abs(t - 0.42) / 0.02)));
+    measured["H2"].emplace_back(t, 0.1 * t);
+    measured["H4"].emplace_back(t, 0.55 - 0.1 * t);
+  }
+  // the run: P1 12 kPa at 0.43 s (a later impact at 1.3 s, beyond the first-impact window, is
+  // not the peak), P3 as measured, H2 0.011 m high throughout, H4 exact; sampled every 2 ms
+  for (int k = 0; k <= 1000; ++k) {
+    const double t = k * 2e-3;
+    sim["P1"].emplace_back(t, std::max(0.0, 1.2e4 * (1 - std::abs(t - 0.43) / 0.02)) + (std::abs(t - 1.3) < 1e-9 ? 5e4 : 0.0));
+    sim["P3"].emplace_back(t, std::max(0.0, 5e3 * (1 - std::abs(t - 0.42) / 0.02)));
+    sim["H2"].emplace_back(t, 0.1 * t + 0.011);
+    sim["H4"].emplace_back(t, 0.55 - 0.1 * t);
+  }
+  const auto e = reference::spheric_test2_errors(measured, sim, 0.55, 2.0);
+  CHECK(e.at("P1_peak_relative_error") == Approx(0.2).margin(1e-12));
+  CHECK(e.at("P1_peak_time_error") == Approx(0.02).margin(1e-12));
+  CHECK(e.at("P3_peak_relative_error") == Approx(0.0).margin(1e-12));
+  CHECK(e.at("P3_peak_time_error") == Approx(0.0).margin(1e-12));
+  CHECK(e.at("H2_rms_error") == Approx(0.011 / 0.55).epsilon(1e-9));
+  CHECK(e.at("H4_rms_error") == Approx(0.0).margin(1e-12));
 }

@@ -110,10 +110,10 @@ Wall read_wall(const Reader& r, const YAML::Node& w, std::size_t i, const std::s
   const std::string key = "walls[" + std::to_string(i) + "]";
   refuse_wall_keys_of_other_dimension(r, w, key, s.dimension);
   if (s.dimension == 2)
-    r.only_keys(w, key, {"name", "points", "file", "closed", "fluid_side", "condition", "motion"});
+    r.only_keys(w, key, {"name", "points", "file", "closed", "fluid_side", "condition", "motion", "moment_centre"});
   else
     r.only_keys(w, key, {"name", "box", "rectangle", "prism", "cylinder", "stl", "units", "scale", "rotate", "translate",
-                         "fluid_side", "condition", "motion"});
+                         "fluid_side", "condition", "motion", "moment_centre"});
   Wall wall;
   wall.name = w["name"] ? r.text(w["name"], key + ".name", "a wall name") : "wall" + std::to_string(i);
   if (wall.name.find_first_of(", \"") != std::string::npos)
@@ -127,6 +127,7 @@ Wall read_wall(const Reader& r, const YAML::Node& w, std::size_t i, const std::s
   if (w["condition"])
     wall.condition = r.word(w["condition"], key + ".condition", {"no_slip", "slip"}) == "slip" ? WallCondition::Slip : WallCondition::NoSlip;
   if (const YAML::Node m = w["motion"]) read_wall_motion(r, m, key, s.dimension, wall);
+  if (const YAML::Node c = w["moment_centre"]) wall.moment_centre = r.vector(c, key + ".moment_centre", s.dimension, " (m)");
   return wall;
 }
 

@@ -56,6 +56,7 @@ struct Wall {
   Vec3 velocity{0, 0, 0};   // sliding: surface velocity; translation: body velocity (m/s)
   Vec3 amplitude{0, 0, 0};  // oscillation: x(t) = x0 + A sin(2 pi t / T) (m)
   double period = 0;        // oscillation period (s)
+  Vec3 moment_centre{0, 0, 0};  // the point the moment of the fluid's force on the wall is taken about (m)
 };
 
 // The analytic or experimental reference a case is compared with (errors in summary.json).

@@ -43,9 +43,11 @@ class RunRecorder {
     probes_.text() << "\n";
     walls_.text() << "time,step";
     if (sim.has_walls())
-      for (const WallForce& f : sim.wall_forces())
+      for (const WallForce& f : sim.wall_forces()) {
         for (const char* part : {"pressure", "viscous"})
           for (int k = 0; k < D; ++k) walls_.text() << "," << f.name << "." << part << "_f" << "xyz"[k];
+        for (int k = D == 2 ? 2 : 0; k < 3; ++k) walls_.text() << "," << f.name << ".moment_" << "xyz"[k];
+      }
     walls_.text() << "\n";
     front_.text().precision(8);
     front_.text() << "T,Z,Z_experiment\n";
@@ -91,6 +93,7 @@ class RunRecorder {
       for (const WallForce& f : forces) {
         for (int k = 0; k < D; ++k) walls_.text() << "," << f.pressure[k];
         for (int k = 0; k < D; ++k) walls_.text() << "," << f.viscous[k];
+        for (int k = D == 2 ? 2 : 0; k < 3; ++k) walls_.text() << "," << f.moment[k];
       }
       walls_.text() << "\n";
       walls_.flush();

@@ -57,6 +57,7 @@ struct ProbeSample {
 struct WallForce {
   std::string name;
   Vec3 pressure{0, 0, 0}, viscous{0, 0, 0};  // N (per metre of span in 2D)
+  Vec3 moment{0, 0, 0};  // of pressure + viscous about the wall's moment_centre, N m (2D: z only, N m per metre)
 };
 
 // Thrown by step() when the state blows up; the particles hold the last good

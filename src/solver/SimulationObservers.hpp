@@ -191,6 +191,15 @@ std::vector<WallForce> Simulation<D>::wall_forces() {
                               WallTractionSum{traction, walls_.points().wall, counted, w, c}, v);
       (c < D ? f.pressure[c] : f.viscous[c - D]) = comm().sum(v);
     }
+    const Vec3& centre = scene_.walls[static_cast<std::size_t>(w)].moment_centre;
+    for (int k = D == 2 ? 2 : 0; k < 3; ++k) {
+      double v = 0;
+      Kokkos::parallel_reduce("ondine::NFM::wall_moment", Kokkos::RangePolicy<ExecSpace>(0, nq),
+                              WallMomentSum<D>{traction, walls_.points().x, walls_.points().wall, counted, w, k,
+                                               {centre[0], centre[1], centre[2]}},
+                              v);
+      f.moment[k] = comm().sum(v);
+    }
     out.push_back(f);
   }
   return out;
