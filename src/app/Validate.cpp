@@ -57,6 +57,20 @@ const std::vector<ValidationCase>& catalogue() {
       // Archimedes; measured 6.5e-2, 6.0e-2, 1.6e-2 at 2, 3, 4 particles per side
       {"immersed_box_3d", "cases/immersed_box_3d.yaml", 0.2, {{0.1, true}, {1.0 / 15, true}, {0.05, true}},
        {{"buoyancy_error", 0.08}, {"wall_leaks", 0.5}}, {}, {}, {"pressure_linf"}},
+      // The thesis' 3D hydrostatic tank (1 x 1 x 2 m half full, c0 = 30 m/s, R/dx = 2.5), 2 s with
+      // 0.5 s of start-up damping: at rest, no leak. Undamped (the thesis: 5 s), the pressure does
+      // not settle within 2 % (docs/validation.md): pressure_linf is shown, not bounded
+      {"hydrostatic_tank_3d", "cases/hydrostatic_tank_3d.yaml", 1.0, {{0.1, true}, {0.05, true}},
+       {{"kinetic_over_potential", 1e-3}, {"wall_leaks", 0.5}}, {"time.duration=2", "time.damping=0.5"}, {}, {"pressure_linf"}},
+      // SPHERIC Test 2 (Kleefsman et al. 2005): the first impact on the box (P1, P3: peak and its
+      // time) and the water levels H2, H4 (RMS over 0-2 s, over the column height) against the
+      // measured series; resolution: particles per column height (0.55 m). Measured H2 6.5e-2, 4.8e-2,
+      // H4 1.3e-2, 1.3e-2 at dx = 0.05, 0.04 (bounded as regression guards); the first impact's raw
+      // pressure peak is 3.7 to 4.2 times the measured one at these resolutions (docs/validation.md):
+      // shown, not bounded
+      {"spheric_test2_3d", "cases/spheric_test2_3d.yaml", 0.55, {{0.05, true}, {0.04, true}},
+       {{"H2_rms_error", 0.08}, {"H4_rms_error", 0.03}, {"wall_crossings", 0.5}},
+       {}, {}, {"P1_peak_relative_error", "P1_peak_time_error", "P3_peak_relative_error", "P3_peak_time_error", "wall_leaks", "wall_corrections"}},
       // Martin & Moyce's dam break: 25 x 50 (quick), 50 x 100 and 100 x 200 particles in the column
       {"dam_break_2d", "cases/dam_break_2d.yaml", 0.05715, {{0.002286, false}, {0.001143, true}, {0.0005715, true}},
        {{"front_max_relative_error", 0.2}, {"front_speed_relative_error", 0.1}}, {}},
