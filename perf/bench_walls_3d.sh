@@ -149,8 +149,8 @@ s0 = json.load(open(f"{work}/{labels[0]}/summary.json"))
 res = {
     "benchmark": "walls_3d",
     "date": datetime.datetime.now().isoformat(timespec="seconds"),
-    "case": os.path.relpath(case_file, os.path.dirname(os.path.dirname(os.path.abspath(out)))),
-    "binary": ondine,
+    "case": "cases/hydrostatic_tank_3d.yaml",
+    "binary": os.path.relpath(ondine, os.path.dirname(os.path.dirname(case_file))) if ondine.startswith(os.path.dirname(os.path.dirname(case_file)) + "/") else ondine,
     "ondine_version": s0["ondine_version"],
     "kokkos_version": s0["kokkos_version"],
     "backend": s0["backend"],
