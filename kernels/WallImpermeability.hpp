@@ -32,6 +32,20 @@ struct WallImpermeability {
   field_view_t<field::Position, D> x0;  // the start of the step (stage storage)
   field_view_t<field::Position, D> x;
   field_view_t<field::Velocity, D> u;
+  // per wall: angular velocity (3) and centre (3) of a rotating wall; empty: none rotates
+  Kokkos::View<double* [6], Kokkos::LayoutRight, MemSpace> wall_spin = {};
+
+  // the velocity of wall w's material point at p: its translation, plus omega x (p - centre)
+  KOKKOS_INLINE_FUNCTION Vec<D> wall_point_velocity(const int w, const Vec<D>& p) const {
+    Vec<D> v = load<D>(wall_velocity, w);
+    if (wall_spin.extent(0) == 0) return v;
+    double r[3] = {0, 0, 0};
+    for (int k = 0; k < D; ++k) r[k] = p[k] - wall_spin(w, 3 + k);
+    const double cr[3] = {wall_spin(w, 1) * r[2] - wall_spin(w, 2) * r[1], wall_spin(w, 2) * r[0] - wall_spin(w, 0) * r[2],
+                          wall_spin(w, 0) * r[1] - wall_spin(w, 1) * r[0]};
+    for (int k = 0; k < D; ++k) v[k] += cr[k];
+    return v;
+  }
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i, long& corrected) const {
     const Vec<D> x1_stored = load<D>(x, i);
@@ -57,7 +71,7 @@ struct WallImpermeability {
         // is on the wall). Only the normal part: a sliding wall (a cavity lid) keeps its
         // facets in place, and shifting by its tangential velocity would carry the path
         // past the facet's edge and miss a crossing next to a corner.
-        const Vec<D> p0 = first_sweep ? from + (dt * dot(load<D>(wall_velocity, facets.wall(s)), n)) * n : from;
+        const Vec<D> p0 = first_sweep ? from + (dt * dot(wall_point_velocity(facets.wall(s), from), n)) * n : from;
         const double d0 = facet_signed_distance<D>(p0, f), d1 = facet_signed_distance<D>(to, f);
         if (!(d0 >= 0.0 && d1 < 0.0)) return;
         const double tau = d0 / (d0 - d1);
@@ -71,7 +85,7 @@ struct WallImpermeability {
       if (hit < 0) break;
       const Vec<D> n = load<D>(facets.n_in, hit);
       to += (-2.0 * d_end) * n;
-      const double vn = dot(ui - load<D>(wall_velocity, facets.wall(hit)), n);
+      const double vn = dot(ui - wall_point_velocity(facets.wall(hit), image), n);
       if (vn < 0.0) ui += (-vn) * n;
       from = image + (1e-12 * box.len[0]) * n;  // the crossing point, on the fluid side
       first_sweep = false;

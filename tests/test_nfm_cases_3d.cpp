@@ -134,3 +134,66 @@ TEST_CASE("Laminar square duct (L/10): velocity against the series solution afte
   CHECK(e.at("velocity_l2") < 1e-2);
   CHECK(sim.wall_leaks() == 0);
 }
+
+TEST_CASE("A rotating 3D wall: points, normals, velocities and the Shepard factor turn with it", "[nfm3d][motion]") {
+  // the 1 x 1 x 2 tank turning about the vertical axis through (0.5, 0.3, 0) at 0.7 rad/s
+  const std::string path = "/tmp/ondine_rotating_tank_" + std::to_string(::getpid()) + ".yaml";
+  {
+    std::ifstream in(src + "/cases/hydrostatic_tank_3d.yaml");
+    std::ofstream out(path);
+    for (std::string line; std::getline(in, line);) {
+      out << line << "\n";
+      if (line.find("condition: slip") != std::string::npos)
+        out << "    motion: {type: rotation, centre: [0.5, 0.3, 0.0], axis: [0, 0, 2], angular_velocity: 0.7}\n";
+    }
+  }
+  const Scene scene = load_case(path, {"discretisation.dx=0.1"});
+  std::remove(path.c_str());
+  REQUIRE(scene.walls[0].motion == WallMotion::Rotation);
+  PeriodicBox<3> box;
+  for (int k = 0; k < 3; ++k) {
+    box.lo[k] = scene.domain.min[k];
+    box.len[k] = scene.domain.max[k] - scene.domain.min[k];
+    box.periodic[k] = false;
+  }
+  const double R = 0.25, t = 0.9, th = 0.7 * t, c = std::cos(th), s = std::sin(th);
+  WallModel<3> still(scene, box, R), turned(scene, box, R);
+  turned.move_to(t);
+  auto x0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), still.points().x);
+  auto n0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), still.points().n_out);
+  auto x1 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), turned.points().x);
+  auto n1 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), turned.points().n_out);
+  auto u1 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), turned.points().u);
+  double worst = 0;
+  for (int q = 0; q < still.points().count; ++q) {
+    const double rx = x0(q, 0) - 0.5, ry = x0(q, 1) - 0.3;
+    const double ex = 0.5 + c * rx - s * ry, ey = 0.3 + s * rx + c * ry;
+    worst = std::max({worst, std::abs(x1(q, 0) - ex), std::abs(x1(q, 1) - ey), std::abs(x1(q, 2) - x0(q, 2)),
+                      std::abs(n1(q, 0) - (c * n0(q, 0) - s * n0(q, 1))), std::abs(n1(q, 1) - (s * n0(q, 0) + c * n0(q, 1))),
+                      std::abs(u1(q, 0) + 0.7 * (ey - 0.3)), std::abs(u1(q, 1) - 0.7 * (ex - 0.5)), std::abs(u1(q, 2))});
+  }
+  INFO("worst deviation of points, normals, velocities " << worst);
+  CHECK(worst < 1e-12);
+  // gamma at points fixed to the tank: the same before and after the turn (facets and facet cells)
+  const int n = 5;
+  const double pts[n][3] = {{0.05, 0.05, 0.05}, {0.2, 0.9, 0.1}, {0.5, 0.5, 0.02}, {0.97, 0.4, 1.0}, {0.3, 0.3, 1.98}};
+  field_view_t<field::Position, 3> xa("xa", n), xb("xb", n);
+  Kokkos::View<double*, MemSpace> ga("ga", n), gb("gb", n);
+  auto ha = Kokkos::create_mirror_view(xa), hb = Kokkos::create_mirror_view(xb);
+  for (int i = 0; i < n; ++i) {
+    const double rx = pts[i][0] - 0.5, ry = pts[i][1] - 0.3;
+    ha(i, 0) = pts[i][0], ha(i, 1) = pts[i][1], ha(i, 2) = pts[i][2];
+    hb(i, 0) = 0.5 + c * rx - s * ry, hb(i, 1) = 0.3 + s * rx + c * ry, hb(i, 2) = pts[i][2];
+  }
+  Kokkos::deep_copy(xa, ha);
+  Kokkos::deep_copy(xb, hb);
+  Kokkos::parallel_for(Kokkos::RangePolicy<ExecSpace>(0, n), ShepardGammaPass<3>{still.facets(), still.facet_cells(), R, box, xa, ga});
+  Kokkos::parallel_for(Kokkos::RangePolicy<ExecSpace>(0, n), ShepardGammaPass<3>{turned.facets(), turned.facet_cells(), R, box, xb, gb});
+  auto hga = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ga);
+  auto hgb = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), gb);
+  for (int i = 0; i < n; ++i) {
+    INFO("point " << i << ": gamma " << hga(i) << " still, " << hgb(i) << " turned");
+    CHECK(hga(i) < 1.0);
+    CHECK(std::abs(hga(i) - hgb(i)) < 1e-12);
+  }
+}

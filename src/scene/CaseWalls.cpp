@@ -76,8 +76,32 @@ void check_wall_shape(const Reader& r, const YAML::Node& w, const std::string& k
 
 void read_wall_motion(const Reader& r, const YAML::Node& m, const std::string& key, int D, Wall& wall) {
   const std::string mk = key + ".motion";
-  r.only_keys(m, mk, {"type", "velocity", "amplitude", "period"});
-  const std::string type = r.word(r.required(m, mk, "type"), mk + ".type", {"fixed", "sliding", "translation", "oscillation"});
+  r.only_keys(m, mk, {"type", "velocity", "amplitude", "period", "centre", "axis", "angular_velocity", "angle_amplitude"});
+  const std::string type =
+      r.word(r.required(m, mk, "type"), mk + ".type", {"fixed", "sliding", "translation", "oscillation", "rotation"});
+  if (type == "rotation") {  // a rigid rotation about centre (and axis, 3D): constant rate or oscillating angle
+    wall.motion = WallMotion::Rotation;
+    wall.centre = r.vector(r.required(m, mk, "centre"), mk + ".centre", D, " (m)");
+    if (D == 3) {
+      const Vec3 a = r.vector(r.required(m, mk, "axis"), mk + ".axis", 3, "");
+      const double n = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+      if (!(n > 0)) r.fail(m["axis"], mk + ".axis", "expected a non-zero axis vector");
+      wall.axis = {a[0] / n, a[1] / n, a[2] / n};
+    } else if (m["axis"]) {
+      r.fail(m["axis"], mk + ".axis", "a 2D wall rotates about the z axis: give centre only");
+    }
+    if (m["angular_velocity"] && m["angle_amplitude"])
+      r.fail(m["angle_amplitude"], mk + ".angle_amplitude", "give either angular_velocity or angle_amplitude with period, not both");
+    if (m["angular_velocity"]) {
+      wall.angular_velocity = r.number(m["angular_velocity"], mk + ".angular_velocity", "a rate (rad/s)");
+    } else if (m["angle_amplitude"]) {
+      wall.angle_amplitude = r.positive(m["angle_amplitude"], mk + ".angle_amplitude", " (degrees)") * M_PI / 180.0;
+      wall.period = r.positive(r.required(m, mk, "period"), mk + ".period", " (s)");
+    } else {
+      r.fail(m, mk + ".angular_velocity", "required for a rotation: angular_velocity (rad/s), or angle_amplitude (degrees) with period (s)");
+    }
+    return;
+  }
   if (type == "sliding" || type == "translation") {
     wall.motion = type == "sliding" ? WallMotion::Sliding : WallMotion::Translation;
     wall.velocity = r.vector(r.required(m, mk, "velocity"), mk + ".velocity", D, " (m/s)");

@@ -34,7 +34,7 @@ struct FluidBlock {
 // A wall of the Normal Flux Method: a polyline (2D) of segments. The stored
 // orientation is the fluid side; the normal out of the fluid (n_out, used by the
 // operators) and into it (n_in, used by the Shepard formulas) derive from it.
-enum class WallMotion { Fixed, Sliding, Translation, Oscillation };
+enum class WallMotion { Fixed, Sliding, Translation, Oscillation, Rotation };
 enum class WallCondition { NoSlip, Slip };
 
 // A 3D wall: a triangle mesh in metres (after units, scaling, rotation and translation),
@@ -55,7 +55,12 @@ struct Wall {
   WallMotion motion = WallMotion::Fixed;
   Vec3 velocity{0, 0, 0};   // sliding: surface velocity; translation: body velocity (m/s)
   Vec3 amplitude{0, 0, 0};  // oscillation: x(t) = x0 + A sin(2 pi t / T) (m)
-  double period = 0;        // oscillation period (s)
+  double period = 0;        // oscillation period (s); rotation: the period of an oscillating angle
+  // rotation about the axis through `centre` (2D: the z axis): angle(t) = omega t, or
+  // angle_amplitude sin(2 pi t / period) with angle_amplitude > 0 (rad)
+  Vec3 centre{0, 0, 0};
+  Vec3 axis{0, 0, 1};       // unit
+  double angular_velocity = 0, angle_amplitude = 0;
   Vec3 moment_centre{0, 0, 0};  // the point the moment of the fluid's force on the wall is taken about (m)
 };
 

@@ -129,7 +129,7 @@ double Simulation<D>::step(double t_stop) {
     // kernels/WallImpermeability.hpp: particles found behind a wall at the end of the step
     update_walls(t_ + dt);
     const long c = WallImpermeability<D>{walls_.facets(), walls_.facet_cells(), walls_.wall_velocity(), dt, domain_.box(), p_.get(field::StagePosition{}),
-                                         p_.get(field::Position{}), p_.get(field::Velocity{})}
+                                         p_.get(field::Position{}), p_.get(field::Velocity{}), walls_.wall_spin()}
                        .run(n_own_);
     if (c > 0) domain_.halos_stale();
     wall_corrections_ += c;

@@ -24,6 +24,7 @@ void motion(const Wall& w, double t, double* disp, double* vel) {
         vel[k] = w.velocity[k];
       }
       break;
+    case WallMotion::Rotation: break;  // rotation(): about the wall's centre
     case WallMotion::Oscillation: {
       const double om = 2 * M_PI / w.period;
       for (int k = 0; k < 3; ++k) {
@@ -35,6 +36,28 @@ void motion(const Wall& w, double t, double* disp, double* vel) {
   }
 }
 
+// Rigid rotation of a wall at time t about its centre: the matrix Rm (row-major 3 x 3,
+// Rodrigues' formula about the unit axis) and the angular velocity vector omega.
+void rotation(const Wall& w, double t, double* Rm, double* omega) {
+  double th = 0, rate = 0;
+  if (w.motion == WallMotion::Rotation) {
+    if (w.angle_amplitude > 0) {
+      const double om = 2 * M_PI / w.period;
+      th = w.angle_amplitude * std::sin(om * t);
+      rate = w.angle_amplitude * om * std::cos(om * t);
+    } else {
+      th = w.angular_velocity * t;
+      rate = w.angular_velocity;
+    }
+  }
+  const double c = std::cos(th), s = std::sin(th), C = 1 - c;
+  const double x = w.axis[0], y = w.axis[1], z = w.axis[2];
+  const double R[9] = {c + x * x * C,     x * y * C - z * s, x * z * C + y * s,  //
+                       y * x * C + z * s, c + y * y * C,     y * z * C - x * s,  //
+                       z * x * C - y * s, z * y * C + x * s, c + z * z * C};
+  for (int k = 0; k < 9; ++k) Rm[k] = R[k];
+  for (int k = 0; k < 3; ++k) omega[k] = rate * w.axis[k];
+}
 
 // The facets and quadrature points of each wall, flattened (D coordinates per vertex or point).
 struct HostWalls {
@@ -117,7 +140,8 @@ WallModel<D>::WallModel(const Scene& scene, const PeriodicBox<D>& box, double cu
     const Wall& wall = walls_[w];
     names_.push_back(wall.name);
     moving_ = moving_ || wall.motion == WallMotion::Translation || wall.motion == WallMotion::Oscillation ||
-              wall.motion == WallMotion::Sliding;
+              wall.motion == WallMotion::Sliding || wall.motion == WallMotion::Rotation;
+    rotating_ = rotating_ || wall.motion == WallMotion::Rotation;
     if constexpr (D == 2) add_polyline(wall, static_cast<int>(w), hq, h);
     else add_mesh(wall, static_cast<int>(w), hq, h);
   }
@@ -163,6 +187,13 @@ WallModel<D>::WallModel(const Scene& scene, const PeriodicBox<D>& box, double cu
     Kokkos::deep_copy(seg_b0_, facets_.b);
     if (D == 3) Kokkos::deep_copy(seg_c0_, facets_.c);
     Kokkos::deep_copy(x0_, points_.x);
+  }
+  wall_spin_ = decltype(wall_spin_)("ondine::NFM::wall_spin", walls_.size());
+  if (rotating_) {  // the normals at rest, turned with the walls
+    n_in0_ = decltype(n_in0_)("ondine::NFM::facet_n_in0", facets_.count);
+    n_out0_ = decltype(n_out0_)("ondine::NFM::point_n_out0", points_.count);
+    Kokkos::deep_copy(n_in0_, facets_.n_in);
+    Kokkos::deep_copy(n_out0_, points_.n_out);
   }
   std::vector<double> no_disp(walls_.size() * D, 0.0);
   build_facet_cells(no_disp);
@@ -306,25 +337,131 @@ void WallModel<D>::move_to(double t) {
     Kokkos::deep_copy(wall_velocity_, vel);
     const auto px = points_.x, pu = points_.u, x0 = x0_;
     const auto pw = points_.wall;
-    Kokkos::parallel_for("ondine::NFM::move_points", Kokkos::RangePolicy<ExecSpace>(0, points_.count), KOKKOS_LAMBDA(const int q) {
-      for (int k = 0; k < D; ++k) {
-        px(q, k) = x0(q, k) + disp(pw(q), k);
-        pu(q, k) = vel(pw(q), k);
-      }
-    });
     const auto a = facets_.a, b = facets_.b, c = facets_.c, a0 = seg_a0_, b0 = seg_b0_, c0 = seg_c0_;
     const auto sw = facets_.wall;
-    Kokkos::parallel_for("ondine::NFM::move_facets", Kokkos::RangePolicy<ExecSpace>(0, facets_.count), KOKKOS_LAMBDA(const int s) {
-      for (int k = 0; k < D; ++k) {
-        a(s, k) = a0(s, k) + disp(sw(s), k);
-        b(s, k) = b0(s, k) + disp(sw(s), k);
-        if (D == 3) c(s, k) = c0(s, k) + disp(sw(s), k);
-      }
-    });
-    if (displaced || facets_moved_) build_facet_cells(flat);
-    facets_moved_ = displaced;
+    if (!rotating_) {
+      Kokkos::parallel_for("ondine::NFM::move_points", Kokkos::RangePolicy<ExecSpace>(0, points_.count), KOKKOS_LAMBDA(const int q) {
+        for (int k = 0; k < D; ++k) {
+          px(q, k) = x0(q, k) + disp(pw(q), k);
+          pu(q, k) = vel(pw(q), k);
+        }
+      });
+      Kokkos::parallel_for("ondine::NFM::move_facets", Kokkos::RangePolicy<ExecSpace>(0, facets_.count), KOKKOS_LAMBDA(const int s) {
+        for (int k = 0; k < D; ++k) {
+          a(s, k) = a0(s, k) + disp(sw(s), k);
+          b(s, k) = b0(s, k) + disp(sw(s), k);
+          if (D == 3) c(s, k) = c0(s, k) + disp(sw(s), k);
+        }
+      });
+      if (displaced || facets_moved_) build_facet_cells(flat);
+      facets_moved_ = displaced;
+    } else {
+      move_rotating(t, disp, vel);
+    }
   }
   cells_.build(make_cell_grid(box_, cutoff_), points_.x, points_.count);
+}
+
+// Walls that rotate (and translate): x = centre + Rm (x0 - centre) + disp, normals Rm n0,
+// velocity vel + omega x (x - centre), for every point and facet; the facet cells from the
+// turned vertices (host loops over walls and facets, not particles).
+template <int D>
+void WallModel<D>::move_rotating(double t, const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& disp,
+                                 const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& vel) {
+  const int nw = static_cast<int>(walls_.size());
+  Kokkos::View<double* [9], Kokkos::LayoutRight, MemSpace> rot("ondine::NFM::wall_rotation", nw);
+  auto hr = Kokkos::create_mirror_view(rot);
+  auto hs = Kokkos::create_mirror_view(wall_spin_);
+  auto hd = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), disp);
+  std::vector<double> Rm(9 * static_cast<std::size_t>(nw));
+  for (int w = 0; w < nw; ++w) {
+    double R[9], om[3];
+    rotation(walls_[w], t, R, om);
+    for (int k = 0; k < 9; ++k) hr(w, k) = Rm[9 * w + k] = R[k];
+    for (int k = 0; k < 3; ++k) {
+      hs(w, k) = om[k];
+      hs(w, 3 + k) = walls_[w].centre[k];
+    }
+  }
+  Kokkos::deep_copy(rot, hr);
+  Kokkos::deep_copy(wall_spin_, hs);
+  const auto spin = wall_spin_;
+  // v <- centre + Rm (v0 - centre) + d, in the first D coordinates (2D: about z)
+  const auto place = KOKKOS_LAMBDA(const int w, const double* v0, double* v, const double* d) {
+    double r[3] = {0, 0, 0};
+    for (int k = 0; k < D; ++k) r[k] = v0[k] - spin(w, 3 + k);
+    for (int k = 0; k < D; ++k) {
+      double s = spin(w, 3 + k) + d[k];
+      for (int l = 0; l < D; ++l) s += rot(w, 3 * k + l) * r[l];
+      v[k] = s;
+    }
+  };
+  // n <- Rm n0 (a normal)
+  const auto turn_normal = KOKKOS_LAMBDA(const int w, const double* n0, double* n) {
+    for (int k = 0; k < D; ++k) {
+      n[k] = 0;
+      for (int l = 0; l < D; ++l) n[k] += rot(w, 3 * k + l) * n0[l];
+    }
+  };
+  const auto px = points_.x, pu = points_.u, pn = points_.n_out, x0 = x0_, n0 = n_out0_;
+  const auto pw = points_.wall;
+  Kokkos::parallel_for("ondine::NFM::move_points", Kokkos::RangePolicy<ExecSpace>(0, points_.count), KOKKOS_LAMBDA(const int q) {
+    const int w = pw(q);
+    double v0[3] = {0, 0, 0}, v[3] = {0, 0, 0}, d[3] = {0, 0, 0}, n[3] = {0, 0, 0}, c0[3] = {0, 0, 0};
+    for (int k = 0; k < D; ++k) {
+      v0[k] = x0(q, k);
+      d[k] = disp(w, k);
+    }
+    place(w, v0, v, d);
+    for (int k = 0; k < D; ++k) v0[k] = n0(q, k);
+    turn_normal(w, v0, n);
+    for (int k = 0; k < D; ++k) c0[k] = v[k] - spin(w, 3 + k);      // x - centre
+    const double om[3] = {spin(w, 0), spin(w, 1), spin(w, 2)};
+    const double cr[3] = {om[1] * c0[2] - om[2] * c0[1], om[2] * c0[0] - om[0] * c0[2], om[0] * c0[1] - om[1] * c0[0]};
+    for (int k = 0; k < D; ++k) {
+      px(q, k) = v[k];
+      pn(q, k) = n[k];
+      pu(q, k) = vel(w, k) + cr[k];
+    }
+  });
+  const auto a = facets_.a, b = facets_.b, c = facets_.c, a0 = seg_a0_, b0 = seg_b0_, cc0 = seg_c0_;
+  const auto fn = facets_.n_in, fn0 = n_in0_;
+  const auto sw = facets_.wall;
+  Kokkos::parallel_for("ondine::NFM::move_facets", Kokkos::RangePolicy<ExecSpace>(0, facets_.count), KOKKOS_LAMBDA(const int s) {
+    const int w = sw(s);
+    double d[3] = {0, 0, 0}, v0[3] = {0, 0, 0}, v[3] = {0, 0, 0};
+    for (int k = 0; k < D; ++k) d[k] = disp(w, k);
+    for (int k = 0; k < D; ++k) v0[k] = a0(s, k);
+    place(w, v0, v, d);
+    for (int k = 0; k < D; ++k) a(s, k) = v[k];
+    for (int k = 0; k < D; ++k) v0[k] = b0(s, k);
+    place(w, v0, v, d);
+    for (int k = 0; k < D; ++k) b(s, k) = v[k];
+    if (D == 3) {
+      for (int k = 0; k < D; ++k) v0[k] = cc0(s, k);
+      place(w, v0, v, d);
+      for (int k = 0; k < D; ++k) c(s, k) = v[k];
+    }
+    for (int k = 0; k < D; ++k) v0[k] = fn0(s, k);
+    turn_normal(w, v0, v);
+    for (int k = 0; k < D; ++k) fn(s, k) = v[k];
+  });
+  // the facet cells of the turned facets (host copies of the vertices, displaced here)
+  std::vector<double> ta(host_a_.size()), tb(host_b_.size()), tc(host_c_.size());
+  auto turn = [&](const std::vector<double>& from, std::vector<double>& to) {
+    for (std::size_t s = 0; s < host_facet_wall_.size() && !from.empty(); ++s) {
+      const int w = host_facet_wall_[s];
+      for (int k = 0; k < D; ++k) {
+        double v = walls_[w].centre[k] + hd(w, k);
+        for (int l = 0; l < D; ++l) v += Rm[9 * w + 3 * k + l] * (from[D * s + l] - walls_[w].centre[l]);
+        to[D * s + k] = v;
+      }
+    }
+  };
+  turn(host_a_, ta);
+  turn(host_b_, tb);
+  turn(host_c_, tc);
+  facet_cells_ = make_facet_cells<D>(box_, cutoff_, ta, tb, tc, host_facet_wall_, std::vector<double>(static_cast<std::size_t>(nw) * D, 0.0));
 }
 
 template class WallModel<2>;

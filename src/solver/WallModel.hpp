@@ -32,6 +32,8 @@ class WallModel {
   const CellList<D>& cells() const { return cells_; }
   // rigid velocity of each wall at the last move_to (zero for fixed walls)
   const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& wall_velocity() const { return wall_velocity_; }
+  // per wall: angular velocity (3) and centre of rotation (3), zero for walls that do not rotate
+  const Kokkos::View<double* [6], Kokkos::LayoutRight, MemSpace>& wall_spin() const { return wall_spin_; }
   // Wall positions and velocities at time t (rigid motion of each wall).
   void move_to(double t);
   bool moving() const { return moving_; }
@@ -40,6 +42,15 @@ class WallModel {
   std::vector<Wall> walls_;
   std::vector<std::string> names_;
   void build_facet_cells(const std::vector<double>& disp);
+
+ public:  // (device lambdas: not in a private member function)
+  void move_rotating(double t, const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& disp,
+                     const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& vel);
+
+ private:
+  bool rotating_ = false;
+  Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> n_in0_, n_out0_;  // rotating walls: the normals at rest
+  Kokkos::View<double* [6], Kokkos::LayoutRight, MemSpace> wall_spin_;      // per wall: omega (3), centre (3)
 
   WallFacets<D> facets_;
   FacetCells<D> facet_cells_;
