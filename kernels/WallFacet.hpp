@@ -21,12 +21,6 @@ KOKKOS_INLINE_FUNCTION double facet_gamma(const Vec<D>& x, const Facet<D>& f, do
   else return shepard_gamma_triangle(x, f.a, f.b, f.c, f.n_in, R);
 }
 
-namespace detail {
-KOKKOS_INLINE_FUNCTION Vec<3> cross3(const Vec<3>& u, const Vec<3>& v) {
-  return Vec<3>{{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]}};
-}
-}  // namespace detail
-
 // Barycentric coordinates (wa, wb, wc) of the projection of p on the facet's plane (3D), or
 // (1 - t, t, 0) on the segment's line (2D).
 template <int D>
@@ -90,9 +84,9 @@ KOKKOS_INLINE_FUNCTION double facet_distance2(const Vec<D>& p, const Facet<D>& f
 KOKKOS_INLINE_FUNCTION double triangle_winding(const Vec<3>& p, const Facet<3>& f) {
   const Vec<3> a = f.a - p, b = f.b - p, c = f.c - p;
   const double la = kmath::sqrt(norm2(a)), lb = kmath::sqrt(norm2(b)), lc = kmath::sqrt(norm2(c));
-  double num = dot(a, detail::cross3(b, c));
+  double num = dot(a, shepard3d::cross(b, c));
   // the vertex order may be either way round n_in: the sign is taken from n_in
-  const double orient = dot(detail::cross3(f.b - f.a, f.c - f.a), f.n_in) > 0 ? 1.0 : -1.0;
+  const double orient = dot(shepard3d::cross(f.b - f.a, f.c - f.a), f.n_in) > 0 ? 1.0 : -1.0;
   const double den = la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la;
   constexpr double inv_2pi = 1.0 / (2.0 * 3.14159265358979323846);
   return orient * inv_2pi * kmath::atan2(num, den);

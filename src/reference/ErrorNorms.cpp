@@ -2,24 +2,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/TriangleMesh.hpp"
 #include "reference/ErrorNorms.hpp"
 #include "reference/References.hpp"
 
 namespace ondine {
 
-namespace {
-
-// the volume enclosed by a closed triangle mesh (divergence theorem), m^3
-double mesh_volume(const WallMesh& m) {
-  double v6 = 0;
-  for (const auto& t : m.triangles) {
-    const Vec3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
-    v6 += a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
-  }
-  return std::abs(v6) / 6.0;
-}
-
-}  // namespace
 
 // The worst relative error of the force on the closed bodies wholly below the free surface
 // (reference.origin + length along the vertical axis, y in 2D, z in 3D) against Archimedes'
@@ -33,7 +21,10 @@ double buoyancy_error(const Scene& scene, const std::vector<WallForce>& forces) 
     for (const auto& pt : w.points) below = below && pt[1] < surface;
     for (const auto& v : w.mesh.vertices) below = below && v[2] < surface;
     if (!below) continue;
-    const double V = D == 2 ? reference::polygon_area(w.points) : mesh_volume(w.mesh);
+    geometry::TriangleMesh body;
+    body.vertices = w.mesh.vertices;
+    body.triangles = w.mesh.triangles;
+    const double V = D == 2 ? reference::polygon_area(w.points) : std::abs(geometry::signed_volume(body));
     double gn = 0;
     for (int k = 0; k < D; ++k) gn += scene.gravity[k] * scene.gravity[k];
     gn = std::sqrt(gn);

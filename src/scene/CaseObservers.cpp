@@ -13,8 +13,7 @@ namespace {
 // starts) and the sensors it is compared with: probes P1 and P3, gauges H2 and H4
 void read_spheric_reference(const Reader& r, const YAML::Node& rf, Scene& s) {
   const std::string rel = r.text(r.required(rf, "reference", "file"), "reference.file", "the CSV of the measured series");
-  const auto slash = s.source_file.find_last_of('/');
-  s.reference.file = (!rel.empty() && rel[0] == '/') || slash == std::string::npos ? rel : s.source_file.substr(0, slash + 1) + rel;
+  s.reference.file = beside_case_file(s.source_file, rel);
   try {
     reference::read_sensor_csv(s.reference.file, {"P1", "P3", "H2", "H4"});
   } catch (const std::exception& e) {

@@ -13,6 +13,13 @@
 
 namespace ondine::case_file {
 
+// A file named in a case file: a relative path is taken from the case file's folder, an
+// absolute one as is.
+inline std::string beside_case_file(const std::string& case_path, const std::string& rel) {
+  const auto slash = case_path.find_last_of('/');
+  return (!rel.empty() && rel[0] == '/') || slash == std::string::npos ? rel : case_path.substr(0, slash + 1) + rel;
+}
+
 // CaseSections.cpp: the settings
 void read_name_and_dimension(const Reader& r, YAML::Node& root, const std::string& path, Scene& s);
 void read_domain(const Reader& r, YAML::Node& root, Scene& s);

@@ -11,8 +11,7 @@ namespace {
 // A CSV of "x, y" lines (also ';', tabs or spaces; '#' comments, blank lines skipped)
 void read_wall_file(const Reader& r, const YAML::Node& f, const std::string& key, const std::string& path, Wall& wall) {
   const std::string rel = r.text(f, key + ".file", "a CSV file of x, y lines");
-  const auto slash = path.find_last_of('/');
-  const std::string file = (!rel.empty() && rel[0] == '/') || slash == std::string::npos ? rel : path.substr(0, slash + 1) + rel;
+  const std::string file = beside_case_file(path, rel);
   std::ifstream in(file);
   if (!in) r.fail(f, key + ".file", "cannot open '" + file + "'");
   std::string line;

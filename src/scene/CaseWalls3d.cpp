@@ -103,8 +103,7 @@ BuiltMesh read_cylinder(const Reader& r, const YAML::Node& g, const std::string&
 // an STL file, relative to the case file's folder unless absolute, in its `units`
 BuiltMesh read_stl_wall(const Reader& r, const YAML::Node& w, const std::string& key, const std::string& path) {
   const std::string rel = r.text(w["stl"], key + ".stl", "the path of an STL file");
-  const auto slash = path.find_last_of('/');
-  const std::string file = rel[0] == '/' || slash == std::string::npos ? rel : path.substr(0, slash + 1) + rel;
+  const std::string file = beside_case_file(path, rel);
   BuiltMesh b;
   if (w["units"]) {
     const std::string u = r.word(w["units"], key + ".units", {"m", "cm", "mm"});

@@ -141,7 +141,6 @@ WallModel<D>::WallModel(const Scene& scene, const PeriodicBox<D>& box, double cu
     names_.push_back(wall.name);
     moving_ = moving_ || wall.motion == WallMotion::Translation || wall.motion == WallMotion::Oscillation ||
               wall.motion == WallMotion::Sliding || wall.motion == WallMotion::Rotation;
-    rotating_ = rotating_ || wall.motion == WallMotion::Rotation;
     if constexpr (D == 2) add_polyline(wall, static_cast<int>(w), hq, h);
     else add_mesh(wall, static_cast<int>(w), hq, h);
   }
@@ -189,25 +188,23 @@ WallModel<D>::WallModel(const Scene& scene, const PeriodicBox<D>& box, double cu
     Kokkos::deep_copy(x0_, points_.x);
   }
   wall_spin_ = decltype(wall_spin_)("ondine::NFM::wall_spin", walls_.size());
-  if (rotating_) {  // the normals at rest, turned with the walls
+  if (moving_) {  // the normals at rest, turned with rotating walls
     n_in0_ = decltype(n_in0_)("ondine::NFM::facet_n_in0", facets_.count);
     n_out0_ = decltype(n_out0_)("ondine::NFM::point_n_out0", points_.count);
     Kokkos::deep_copy(n_in0_, facets_.n_in);
     Kokkos::deep_copy(n_out0_, points_.n_out);
   }
-  std::vector<double> no_disp(walls_.size() * D, 0.0);
-  build_facet_cells(no_disp);
+  facet_cells_ = make_facet_cells<D>(box_, cutoff_, host_a_, host_b_, host_c_, host_facet_wall_);
   move_to(0.0);
 }
 
 // The facet cells (kernels/WallSet.hpp) of facets (a, b, c: D coordinates per vertex, c empty
-// in 2D; wall: the wall of each) displaced by disp (D per wall): a host loop over the facets
-// and their periodic images, twice (count, then fill), so that each cell lists its entries by
-// image, then facet.
+// in 2D; wall: the wall of each): a host loop over the facets and their periodic images, twice
+// (count, then fill), so that each cell lists its entries by image, then facet.
 template <int D>
 FacetCells<D> make_facet_cells(const PeriodicBox<D>& box_, double cutoff_, const std::vector<double>& host_a_,
                                const std::vector<double>& host_b_, const std::vector<double>& host_c_,
-                               const std::vector<int>& host_facet_wall_, const std::vector<double>& disp) {
+                               const std::vector<int>& host_facet_wall_) {
   const CellGrid<D> g = make_cell_grid(box_, cutoff_);
   const int ncell = g.cells();
   const double reach = cutoff_ * (1.0 + 1e-9);
@@ -237,7 +234,7 @@ FacetCells<D> make_facet_cells(const PeriodicBox<D>& box_, double cutoff_, const
         int lo[D], hi[D];
         bool empty = false;
         for (int k = 0; k < D; ++k) {
-          const double d = disp[D * host_facet_wall_[s] + k] - o[k] * box_.len[k];
+          const double d = -o[k] * box_.len[k];
           double vmin = host_a_[D * s + k], vmax = vmin;
           for (const std::vector<double>* v : {&host_b_, &host_c_})
             if (!v->empty()) {
@@ -301,97 +298,85 @@ FacetCells<D> make_facet_cells(const PeriodicBox<D>& box, double cutoff, const W
   };
   auto hw = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), f.wall);
   std::vector<int> wall(hw.data(), hw.data() + f.count);
-  int walls = 0;
-  for (int w : wall) walls = std::max(walls, w + 1);
-  return make_facet_cells<D>(box, cutoff, host(f.a), host(f.b), D == 3 ? host(f.c) : std::vector<double>(), wall,
-                             std::vector<double>(static_cast<std::size_t>(walls) * D, 0.0));
+  return make_facet_cells<D>(box, cutoff, host(f.a), host(f.b), D == 3 ? host(f.c) : std::vector<double>(), wall);
 }
 
-template <int D>
-void WallModel<D>::build_facet_cells(const std::vector<double>& disp) {
-  facet_cells_ = make_facet_cells<D>(box_, cutoff_, host_a_, host_b_, host_c_, host_facet_wall_, disp);
-}
-
+// Wall positions and velocities at time t. Each wall moves rigidly: x = c + Rm (x0 - c) + d,
+// normals Rm n0, velocity v + omega x (x - c), with d, v of its translation or oscillation and
+// Rm, omega of its rotation about c (the identity and zero for a wall that does not rotate, which
+// leaves x0 + d and v bit for bit). The facet cells are rebuilt from the moved vertices (host
+// loops over walls and facets, not particles) whenever a wall is away from its rest position.
 template <int D>
 void WallModel<D>::move_to(double t) {
   if (walls_.empty()) return;
   if (moving_) {
-    // per-wall rigid displacement and velocity (a loop over walls, not particles)
     const int nw = static_cast<int>(walls_.size());
     Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> disp("ondine::NFM::wall_disp", nw), vel("ondine::NFM::wall_vel", nw);
+    Kokkos::View<double* [9], Kokkos::LayoutRight, MemSpace> rot("ondine::NFM::wall_rotation", nw);
     auto hd = Kokkos::create_mirror_view(disp);
     auto hv = Kokkos::create_mirror_view(vel);
-    std::vector<double> flat(static_cast<std::size_t>(nw) * D);
-    bool displaced = false;
+    auto hr = Kokkos::create_mirror_view(rot);
+    auto hs = Kokkos::create_mirror_view(wall_spin_);
+    bool away = false;  // some wall is displaced or turned
     for (int w = 0; w < nw; ++w) {
-      double d3[3], v3[3];
+      double d3[3], v3[3], R[9], om[3];
       motion(walls_[w], t, d3, v3);
+      rotation(walls_[w], t, R, om);
       for (int k = 0; k < D; ++k) {
-        hd(w, k) = flat[D * w + k] = d3[k];
+        hd(w, k) = d3[k];
         hv(w, k) = v3[k];
-        displaced = displaced || d3[k] != 0.0;
+        away = away || d3[k] != 0.0;
+      }
+      for (int k = 0; k < 9; ++k) {
+        hr(w, k) = R[k];
+        away = away || R[k] != (k % 4 == 0 ? 1.0 : 0.0);
+      }
+      for (int k = 0; k < 3; ++k) {
+        hs(w, k) = om[k];
+        hs(w, 3 + k) = walls_[w].centre[k];
       }
     }
     Kokkos::deep_copy(disp, hd);
     Kokkos::deep_copy(vel, hv);
+    Kokkos::deep_copy(rot, hr);
+    Kokkos::deep_copy(wall_spin_, hs);
     Kokkos::deep_copy(wall_velocity_, vel);
-    const auto px = points_.x, pu = points_.u, x0 = x0_;
-    const auto pw = points_.wall;
-    const auto a = facets_.a, b = facets_.b, c = facets_.c, a0 = seg_a0_, b0 = seg_b0_, c0 = seg_c0_;
-    const auto sw = facets_.wall;
-    if (!rotating_) {
-      Kokkos::parallel_for("ondine::NFM::move_points", Kokkos::RangePolicy<ExecSpace>(0, points_.count), KOKKOS_LAMBDA(const int q) {
-        for (int k = 0; k < D; ++k) {
-          px(q, k) = x0(q, k) + disp(pw(q), k);
-          pu(q, k) = vel(pw(q), k);
+    place_points_and_facets(disp, vel, rot);
+    if (away || facets_moved_) {
+      // the facet cells of the moved facets, from host copies of the vertices
+      std::vector<double> ta(host_a_.size()), tb(host_b_.size()), tc(host_c_.size());
+      auto place = [&](const std::vector<double>& from, std::vector<double>& to) {
+        for (std::size_t s = 0; s < host_facet_wall_.size() && !from.empty(); ++s) {
+          const int w = host_facet_wall_[s];
+          for (int k = 0; k < D; ++k) {
+            double v = hs(w, 3 + k) + hd(w, k);
+            for (int l = 0; l < D; ++l) v += hr(w, 3 * k + l) * (from[D * s + l] - hs(w, 3 + l));
+            to[D * s + k] = v;
+          }
         }
-      });
-      Kokkos::parallel_for("ondine::NFM::move_facets", Kokkos::RangePolicy<ExecSpace>(0, facets_.count), KOKKOS_LAMBDA(const int s) {
-        for (int k = 0; k < D; ++k) {
-          a(s, k) = a0(s, k) + disp(sw(s), k);
-          b(s, k) = b0(s, k) + disp(sw(s), k);
-          if (D == 3) c(s, k) = c0(s, k) + disp(sw(s), k);
-        }
-      });
-      if (displaced || facets_moved_) build_facet_cells(flat);
-      facets_moved_ = displaced;
-    } else {
-      move_rotating(t, disp, vel);
+      };
+      place(host_a_, ta);
+      place(host_b_, tb);
+      place(host_c_, tc);
+      facet_cells_ = make_facet_cells<D>(box_, cutoff_, ta, tb, tc, host_facet_wall_);
     }
+    facets_moved_ = away;
   }
   cells_.build(make_cell_grid(box_, cutoff_), points_.x, points_.count);
 }
 
-// Walls that rotate (and translate): x = centre + Rm (x0 - centre) + disp, normals Rm n0,
-// velocity vel + omega x (x - centre), for every point and facet; the facet cells from the
-// turned vertices (host loops over walls and facets, not particles).
+// The points and facets of the walls placed by their rigid motions (see move_to).
 template <int D>
-void WallModel<D>::move_rotating(double t, const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& disp,
-                                 const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& vel) {
-  const int nw = static_cast<int>(walls_.size());
-  Kokkos::View<double* [9], Kokkos::LayoutRight, MemSpace> rot("ondine::NFM::wall_rotation", nw);
-  auto hr = Kokkos::create_mirror_view(rot);
-  auto hs = Kokkos::create_mirror_view(wall_spin_);
-  auto hd = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), disp);
-  std::vector<double> Rm(9 * static_cast<std::size_t>(nw));
-  for (int w = 0; w < nw; ++w) {
-    double R[9], om[3];
-    rotation(walls_[w], t, R, om);
-    for (int k = 0; k < 9; ++k) hr(w, k) = Rm[9 * w + k] = R[k];
-    for (int k = 0; k < 3; ++k) {
-      hs(w, k) = om[k];
-      hs(w, 3 + k) = walls_[w].centre[k];
-    }
-  }
-  Kokkos::deep_copy(rot, hr);
-  Kokkos::deep_copy(wall_spin_, hs);
+void WallModel<D>::place_points_and_facets(const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& disp,
+                                           const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& vel,
+                                           const Kokkos::View<double* [9], Kokkos::LayoutRight, MemSpace>& rot) {
   const auto spin = wall_spin_;
-  // v <- centre + Rm (v0 - centre) + d, in the first D coordinates (2D: about z)
-  const auto place = KOKKOS_LAMBDA(const int w, const double* v0, double* v, const double* d) {
+  // v <- c + d + Rm (v0 - c), in the first D coordinates (2D: about z)
+  const auto place = KOKKOS_LAMBDA(const int w, const double* v0, double* v) {
     double r[3] = {0, 0, 0};
     for (int k = 0; k < D; ++k) r[k] = v0[k] - spin(w, 3 + k);
     for (int k = 0; k < D; ++k) {
-      double s = spin(w, 3 + k) + d[k];
+      double s = spin(w, 3 + k) + disp(w, k);
       for (int l = 0; l < D; ++l) s += rot(w, 3 * k + l) * r[l];
       v[k] = s;
     }
@@ -407,61 +392,42 @@ void WallModel<D>::move_rotating(double t, const Kokkos::View<double* [D], Kokko
   const auto pw = points_.wall;
   Kokkos::parallel_for("ondine::NFM::move_points", Kokkos::RangePolicy<ExecSpace>(0, points_.count), KOKKOS_LAMBDA(const int q) {
     const int w = pw(q);
-    double v0[3] = {0, 0, 0}, v[3] = {0, 0, 0}, d[3] = {0, 0, 0}, n[3] = {0, 0, 0}, c0[3] = {0, 0, 0};
-    for (int k = 0; k < D; ++k) {
-      v0[k] = x0(q, k);
-      d[k] = disp(w, k);
-    }
-    place(w, v0, v, d);
+    double v0[3] = {0, 0, 0}, v[3] = {0, 0, 0}, n[3] = {0, 0, 0};
+    for (int k = 0; k < D; ++k) v0[k] = x0(q, k);
+    place(w, v0, v);
     for (int k = 0; k < D; ++k) v0[k] = n0(q, k);
     turn_normal(w, v0, n);
-    for (int k = 0; k < D; ++k) c0[k] = v[k] - spin(w, 3 + k);      // x - centre
-    const double om[3] = {spin(w, 0), spin(w, 1), spin(w, 2)};
-    const double cr[3] = {om[1] * c0[2] - om[2] * c0[1], om[2] * c0[0] - om[0] * c0[2], om[0] * c0[1] - om[1] * c0[0]};
+    double r[3] = {0, 0, 0};  // x - c
+    for (int k = 0; k < D; ++k) r[k] = v[k] - spin(w, 3 + k);
+    const double cr[3] = {spin(w, 1) * r[2] - spin(w, 2) * r[1], spin(w, 2) * r[0] - spin(w, 0) * r[2],
+                          spin(w, 0) * r[1] - spin(w, 1) * r[0]};
     for (int k = 0; k < D; ++k) {
       px(q, k) = v[k];
       pn(q, k) = n[k];
       pu(q, k) = vel(w, k) + cr[k];
     }
   });
-  const auto a = facets_.a, b = facets_.b, c = facets_.c, a0 = seg_a0_, b0 = seg_b0_, cc0 = seg_c0_;
+  const auto a = facets_.a, b = facets_.b, c = facets_.c, a0 = seg_a0_, b0 = seg_b0_, c0 = seg_c0_;
   const auto fn = facets_.n_in, fn0 = n_in0_;
   const auto sw = facets_.wall;
   Kokkos::parallel_for("ondine::NFM::move_facets", Kokkos::RangePolicy<ExecSpace>(0, facets_.count), KOKKOS_LAMBDA(const int s) {
     const int w = sw(s);
-    double d[3] = {0, 0, 0}, v0[3] = {0, 0, 0}, v[3] = {0, 0, 0};
-    for (int k = 0; k < D; ++k) d[k] = disp(w, k);
+    double v0[3] = {0, 0, 0}, v[3] = {0, 0, 0};
     for (int k = 0; k < D; ++k) v0[k] = a0(s, k);
-    place(w, v0, v, d);
+    place(w, v0, v);
     for (int k = 0; k < D; ++k) a(s, k) = v[k];
     for (int k = 0; k < D; ++k) v0[k] = b0(s, k);
-    place(w, v0, v, d);
+    place(w, v0, v);
     for (int k = 0; k < D; ++k) b(s, k) = v[k];
     if (D == 3) {
-      for (int k = 0; k < D; ++k) v0[k] = cc0(s, k);
-      place(w, v0, v, d);
+      for (int k = 0; k < D; ++k) v0[k] = c0(s, k);
+      place(w, v0, v);
       for (int k = 0; k < D; ++k) c(s, k) = v[k];
     }
     for (int k = 0; k < D; ++k) v0[k] = fn0(s, k);
     turn_normal(w, v0, v);
     for (int k = 0; k < D; ++k) fn(s, k) = v[k];
   });
-  // the facet cells of the turned facets (host copies of the vertices, displaced here)
-  std::vector<double> ta(host_a_.size()), tb(host_b_.size()), tc(host_c_.size());
-  auto turn = [&](const std::vector<double>& from, std::vector<double>& to) {
-    for (std::size_t s = 0; s < host_facet_wall_.size() && !from.empty(); ++s) {
-      const int w = host_facet_wall_[s];
-      for (int k = 0; k < D; ++k) {
-        double v = walls_[w].centre[k] + hd(w, k);
-        for (int l = 0; l < D; ++l) v += Rm[9 * w + 3 * k + l] * (from[D * s + l] - walls_[w].centre[l]);
-        to[D * s + k] = v;
-      }
-    }
-  };
-  turn(host_a_, ta);
-  turn(host_b_, tb);
-  turn(host_c_, tc);
-  facet_cells_ = make_facet_cells<D>(box_, cutoff_, ta, tb, tc, host_facet_wall_, std::vector<double>(static_cast<std::size_t>(nw) * D, 0.0));
 }
 
 template class WallModel<2>;

@@ -41,15 +41,14 @@ class WallModel {
  private:
   std::vector<Wall> walls_;
   std::vector<std::string> names_;
-  void build_facet_cells(const std::vector<double>& disp);
 
  public:  // (device lambdas: not in a private member function)
-  void move_rotating(double t, const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& disp,
-                     const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& vel);
+  void place_points_and_facets(const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& disp,
+                               const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& vel,
+                               const Kokkos::View<double* [9], Kokkos::LayoutRight, MemSpace>& rot);
 
  private:
-  bool rotating_ = false;
-  Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> n_in0_, n_out0_;  // rotating walls: the normals at rest
+  Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> n_in0_, n_out0_;  // moving walls: the normals at rest
   Kokkos::View<double* [6], Kokkos::LayoutRight, MemSpace> wall_spin_;      // per wall: omega (3), centre (3)
 
   WallFacets<D> facets_;
