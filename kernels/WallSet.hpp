@@ -65,6 +65,25 @@ KOKKOS_INLINE_FUNCTION void for_each_facet_near(const FacetCells<D>& cells, cons
   }
 }
 
+// The facets with the cells that find those near a point: what the refinement's wall
+// clearances read (kernels/apr/), without visiting every facet of the mesh.
+template <int D>
+struct NearFacets {
+  WallFacets<D> facets;
+  FacetCells<D> cells;
+};
+
+// f(facet, x_s) for each facet near x whose span holds the projection of x_s (x moved into
+// the facet's periodic image): the facets a point can be pushed against along their normal.
+template <int D, class F>
+KOKKOS_INLINE_FUNCTION void for_each_facet_over(const NearFacets<D>& w, const PeriodicBox<D>& box, const Vec<D>& x, F&& f) {
+  if (w.facets.count == 0) return;
+  for_each_facet_near<D>(w.cells, box, x, [&](const int s, const Vec<D>& xs) {
+    const Facet<D> fs = w.facets(s);
+    if (facet_spans<D>(xs, fs)) f(fs, xs);
+  });
+}
+
 // gamma_i = 1 + sum of the facets' terms (2D 4.52-4.55, 3D 4.80-4.82) over the facets near
 // particle i; clipped to [1e-3, 1] so that a particle pushed through a wall never divides by
 // ~0. In a periodic axis the facets' images one period away are included too.

@@ -260,25 +260,22 @@ struct GuardApply {
   field_view_t<field::Density, D> rho;
   field_view_t<field::DensityGradient, D> grad_rho;  // unallocated: not interpolated
   // NFM walls (count 0 without): a guard is not integrated, so no wall term keeps it
-  // in the fluid; within dx_l / 2 of a wall segment the part of its interpolated
-  // velocity that points into the wall is removed (no penetration).
-  WallFacets<D> seg;
+  // in the fluid; within dx_l / 2 of a wall facet (segment or triangle) whose span holds
+  // it, the part of its interpolated velocity that points into the wall is removed (no
+  // penetration).
+  NearFacets<D> walls;
+  PeriodicBox<D> box;
   RefinementZones<D> zones;
   field_view_t<field::Position, D> x;
   field_view_t<field::AprBirthLevel, D> birth;
 
   KOKKOS_INLINE_FUNCTION void no_penetration(const int i, Vec<D>& ui) const {
-    const Vec<D> xi = load<D>(x, i);
     const double reach = 0.5 * zones.dx[birth(i)];
-    for (int k = 0; k < seg.count; ++k) {
-      const Vec<D> a = load<D>(seg.a, k), b = load<D>(seg.b, k), n = load<D>(seg.n_in, k);
-      const Vec<D> ab = b - a;
-      const double t = dot(xi - a, ab) / norm2(ab);
-      if (t < 0.0 || t > 1.0) continue;
-      const double d = dot(xi - a, n);  // > 0 on the fluid side
-      const double un = dot(ui, n);
-      if (d < reach && un < 0.0) ui -= un * n;
-    }
+    for_each_facet_over<D>(walls, box, load<D>(x, i), [&](const Facet<D>& f, const Vec<D>& xs) {
+      const double d = facet_signed_distance<D>(xs, f);  // > 0 on the fluid side
+      const double un = dot(ui, f.n_in);
+      if (d < reach && un < 0.0) ui -= un * f.n_in;
+    });
   }
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {

@@ -83,7 +83,7 @@ struct GuardSpacing {
   RefinementZones<D> zones;
   UnitKernel W1;      // the scene's kernel at radius 1: W(r, R) = W1(r / R) / R^D
   double R, dx;       // R_r, dx_r
-  WallFacets<D> seg;
+  NearFacets<D> walls;       // the facets, for the clearance
   WallPoints<D> wall;        // read with Walls only
   CellList<D> wall_cells;    // the wall points binned at R_r
   field_view_t<field::Position, D> x;
@@ -156,15 +156,12 @@ struct GuardSpacing {
     Vec<D> s = (-coef * R2) * gradC;
     const double len2 = norm2(s), cap = max_step * dx;
     if (len2 > cap * cap) s *= cap / kmath::sqrt(len2);
-    // not closer than dx_r / 8 (mothers: dx_r / 4) to a wall (each segment whose span holds the guard)
+    // not closer than dx_r / 8 (mothers: dx_r / 4) to a wall (each facet whose span holds the guard)
     const double clearance = (as_mother ? 0.25 : 0.125) * dx;
-    for (int k = 0; k < seg.count; ++k) {
-      const Vec<D> a = load<D>(seg.a, k), ab = load<D>(seg.b, k) - a, n = load<D>(seg.n_in, k);
-      const double t = dot(xi - a, ab) / norm2(ab);
-      if (t < 0.0 || t > 1.0) continue;
-      const double sn = dot(s, n);
-      if (sn < 0.0 && dot(xi - a, n) + sn < clearance) s -= sn * n;
-    }
+    for_each_facet_over<D>(walls, box, xi, [&](const Facet<D>& f, const Vec<D>& xs) {
+      const double sn = dot(s, f.n_in);
+      if (sn < 0.0 && facet_signed_distance<D>(xs, f) + sn < clearance) s -= sn * f.n_in;
+    });
     if (norm2(s) > 0.0) ++moved;
     for (int a = 0; a < D; ++a) shift(i, a) = s[a];
   }

@@ -246,13 +246,13 @@ struct DaughterFill {
 // 0.2 dx_f of their sisters, and the fine particles on the floor became the noisiest
 // of the level interface. Instead the family is moved along the wall's normal until
 // its centre is dx_m/2 from the wall, so that its daughters sit dx_f/2 and 3 dx_f/2
-// from it, as on a fine lattice (each segment whose span holds the mother's
-// projection and that is closer than dx_m/2, periodic images included; two sweeps,
-// for the second wall of a corner). Velocity and density keep their prolongation
+// from it, as on a fine lattice (each facet, segment or triangle, whose span holds the
+// mother's projection and that is closer than dx_m/2, periodic images included; two
+// sweeps, for the second wall of a corner). Velocity and density keep their prolongation
 // (5.22), so the family's momentum is unchanged; the shift is below dx_m/2.
 template <int D>
 struct DaughterWallClearance {
-  WallFacets<D> seg;
+  NearFacets<D> walls;
   PeriodicBox<D> box;
   RefinementZones<D> zones;
   Kokkos::View<int*, MemSpace> refining, kept_index;
@@ -261,39 +261,35 @@ struct DaughterWallClearance {
   field_view_t<field::AprBirthLevel, D> birth;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int k, long& moved) const {
-    if constexpr (D == 2) {
-      const int mi = kept_index(refining(k));
-      const Vec<D> xm = load<D>(x, mi);
-      const double half = 0.5 * zones.dx[birth(mi)];
-      Vec<D> centre = xm;
-      for (int sweep = 0; sweep < 2; ++sweep) {
-        const int sx = box.periodic[0] ? 1 : 0, sy = box.periodic[1] ? 1 : 0;
-        double d_min = half;
-        int hit = -1;
-        for (int ox = -sx; ox <= sx; ++ox)
-          for (int oy = -sy; oy <= sy; ++oy)
-            for (int s = 0; s < seg.count; ++s) {
-              Vec<D> off;
-              off[0] = ox * box.len[0];
-              off[1] = oy * box.len[1];
-              const Vec<D> a = load<D>(seg.a, s) - off, ab = load<D>(seg.b, s) - load<D>(seg.a, s);
-              const double d = dot(centre - a, load<D>(seg.n_in, s));
-              const double sigma = dot(centre - a, ab) / norm2(ab);
-              if (sigma < 0.0 || sigma > 1.0 || d <= -half || d >= d_min) continue;
-              d_min = d;
-              hit = s;
-            }
-        if (hit < 0) break;
-        centre += (half - d_min) * load<D>(seg.n_in, hit);
+    const int mi = kept_index(refining(k));
+    const Vec<D> xm = load<D>(x, mi);
+    const double half = 0.5 * zones.dx[birth(mi)];
+    Vec<D> centre = xm;
+    for (int sweep = 0; sweep < 2; ++sweep) {  // the second for the other wall of a corner (or edge, in 3D)
+      double d_min = half;
+      bool hit = false;
+      Vec<D> n_hit = Vec<D>::zero();
+      // the facets near the mother (the family's centre moves by less than dx_m / 2 < R)
+      for_each_facet_near<D>(walls.cells, box, xm, [&](const int s, const Vec<D>& xs) {
+        const Vec<D> cs = centre + (xs - xm);  // the centre in the facet's periodic image
+        const Facet<D> f = walls.facets(s);
+        if (!facet_spans<D>(cs, f)) return;
+        const double d = facet_signed_distance<D>(cs, f);
+        if (d <= -half || d >= d_min) return;
+        d_min = d;
+        n_hit = f.n_in;
+        hit = true;
+      });
+      if (!hit) break;
+      centre += (half - d_min) * n_hit;
+    }
+    const Vec<D> shift = centre - xm;
+    if (norm2(shift) > 0.0) {
+      for (int c = 0; c < (1 << D); ++c) {
+        const int f = kept + (k << D) + c;
+        for (int a = 0; a < D; ++a) x(f, a) = box.wrap(x(f, a) + shift[a], a);
       }
-      const Vec<D> shift = centre - xm;
-      if (norm2(shift) > 0.0) {
-        for (int c = 0; c < (1 << D); ++c) {
-          const int f = kept + (k << D) + c;
-          for (int a = 0; a < D; ++a) x(f, a) = box.wrap(x(f, a) + shift[a], a);
-        }
-        ++moved;
-      }
+      ++moved;
     }
   }
 };

@@ -118,8 +118,6 @@ void read_refinement(const Reader& r, YAML::Node& root, Scene& s) {
     if (s.renormalised_continuity)
       r.fail(ref, "refinement", "scheme.renormalised_continuity with refinement zones is not supported (the per-level flux does not run it)");
     read_zones(r, r.required(ref, "refinement", "zones"), "refinement.zones", 1, -1, s);
-    if (s.dimension == 3 && !s.walls.empty())
-      r.fail(ref["zones"], "refinement.zones", "refinement zones next to 3D walls are not supported yet");
   }
 }
 

@@ -179,7 +179,7 @@ class AdaptiveRefinement {
   // depend on the rank count). Families next to a wall are moved off it (`walls`).
   // Returns the new owned count (halos dropped).
   int update(ParticleSet<D>& p, const CellList<D>& cells, const PeriodicBox<D>& box, int n, const Communicator& comm,
-             const WallFacets<D>& walls = WallFacets<D>()) {
+             const NearFacets<D>& walls = NearFacets<D>()) {
     Kokkos::View<int*, MemSpace> action("ondine::APR::action", n), kept_index("ondine::APR::kept_index", n),
         refine_index("ondine::APR::refine_index", n);
     // the mother flags before this pass (a deleted mother takes its daughters along)
@@ -238,7 +238,7 @@ class AdaptiveRefinement {
                                                 p.get(field::Position{}), p.get(field::Velocity{}), p.get(field::Density{}),
                                                 p.get(field::Mass{}), p.get(field::GlobalId{}), p.get(field::AprBirthLevel{}),
                                                 p.get(field::AprMother{}), p.get(field::AprParent{})});
-      if (walls.count > 0)
+      if (walls.facets.count > 0)
         Kokkos::parallel_reduce("ondine::APR::daughter_wall_clearance", Kokkos::RangePolicy<ExecSpace>(0, nref),
                                 apr::DaughterWallClearance<D>{walls, box, zones_, refining, kept_index, kept,
                                                               p.get(field::Position{}), p.get(field::AprBirthLevel{})},
@@ -287,7 +287,7 @@ class AdaptiveRefinement {
   // The shape functions are recomputed when invalidated (a new step, new lists) and
   // always with `passive`.
   void interpolate(ParticleSet<D>& p, const PeriodicBox<D>& box, bool passive = false,
-                   const WallFacets<D>& walls = WallFacets<D>()) {
+                   const NearFacets<D>& walls = NearFacets<D>()) {
     Kokkos::Timer timer;
     if (passive || !weights_valid_) {
       with_kernel<D>(kernel_, 1.0, [&](auto W1) {
@@ -302,7 +302,7 @@ class AdaptiveRefinement {
       weights_valid_ = true;
     }
     apr::GuardApply<D> f{l_cross_, psi_, used_, p.get(field::Velocity{}), p.get(field::Density{}), field_view_t<field::DensityGradient, D>(),
-                         walls, zones_, p.get(field::Position{}), p.get(field::AprBirthLevel{})};
+                         walls, box, zones_, p.get(field::Position{}), p.get(field::AprBirthLevel{})};
     if (p.has(field::DensityGradient{})) f.grad_rho = p.get(field::DensityGradient{});
     for (int l = 0; l < levels_; ++l) {
       const int e = passive ? end_[l] : guard_end_[l];

@@ -41,6 +41,7 @@ struct PassContext {
   // walls
   WallPoints<D> wall;
   WallFacets<D> facets;  // segments (2D) or triangles (3D)
+  FacetCells<D> facet_cells;  // the facets near each cell
   LaplacianWeightView<D> weights;  // the consistent Laplacian's, next to no-slip walls
   WallEos eos;
   double nu = 0, rho0 = 0;

@@ -139,7 +139,7 @@ long guard_spacing(const PassContext<D>& c, const Kokkos::View<double* [D], Kokk
                    bool mothers) {
   long moved = 0;
   Kokkos::parallel_reduce("ondine::APR::GuardSpacing", range(c),
-                          apr::GuardSpacing<D, K, Walls>{c.cells, c.box, c.zones, K(1.0), c.R, c.dx, c.facets, c.wall, c.wall_cells,
+                          apr::GuardSpacing<D, K, Walls>{c.cells, c.box, c.zones, K(1.0), c.R, c.dx, NearFacets<D>{c.facets, c.facet_cells}, c.wall, c.wall_cells,
                                                          c.x, c.rho, c.m, c.birth, c.mother,
                                                          Walls ? c.gamma : field_view_t<field::ShepardGamma, D>(), shift, daughters,
                                                          mothers},

@@ -97,6 +97,7 @@ PassContext<D> Simulation<D>::pass_context(const LevelSpan<D>& L) const {
   take(c.free_surface, field::FreeSurface{});
   c.wall = walls_.points();
   c.facets = walls_.facets();
+  c.facet_cells = walls_.facet_cells();
   c.weights = laplacian_weights_;
   c.eos = wall_eos();
   c.nu = scene_.nu;
@@ -120,7 +121,7 @@ void Simulation<D>::evaluate() {
   const bool walls = !walls_.empty();
   if (walls) update_walls(stage_time_);
   if (apr_on_) {
-    apr_.interpolate(p_, domain_.box(), false, walls_.facets());  // guards from this stage's SPH particles (5.24)
+    apr_.interpolate(p_, domain_.box(), false, walls_.near_facets());  // guards from this stage's SPH particles (5.24)
     // several ranks: the guards' halo copies (their density gradient travels after the gradient pass)
     domain_.refresh(p_, field::Velocity{}, field::Density{});
     if (walls && (walls_.moving() || level_wall_cells_.empty())) build_level_wall_cells();

@@ -104,11 +104,11 @@ void Simulation<D>::refinement_bookkeeping() {
     domain_.refresh(p_, field::AprBirthLevel{});
   }
   domain_.build_cells(p_.get(field::Position{}), static_cast<int>(p_.size()));  // for the prolongation gradient
-  n_own_ = apr_.update(p_, domain_.cells(), domain_.box(), n_own_, comm(), walls_.facets());
+  n_own_ = apr_.update(p_, domain_.cells(), domain_.box(), n_own_, comm(), walls_.near_facets());
   domain_.invalidate_lists();
   bookkeeping_due_ = false;
   rebuild_lists(true, true);
-  apr_.interpolate(p_, domain_.box(), true, walls_.facets());  // passive guards: once per bookkeeping
+  apr_.interpolate(p_, domain_.box(), true, walls_.near_facets());  // passive guards: once per bookkeeping
   refresh_guard_halos();
 }
 

@@ -236,7 +236,7 @@ void Simulation<D>::prepare_output() {
     if (p_.has(field::DensityGradient{})) keep(saved_grad_rho_, p_.get(field::DensityGradient{}));
     apr_.save_wide_flags();
     output_saved_ = true;
-    apr_.interpolate(p_, domain_.box(), true, walls_.facets());  // the guards of the stored state (5.24)
+    apr_.interpolate(p_, domain_.box(), true, walls_.near_facets());  // the guards of the stored state (5.24)
     refresh_guard_halos();
   }
   const int n = static_cast<int>(p_.size());

@@ -28,6 +28,7 @@ class WallModel {
   const std::vector<std::string>& names() const { return names_; }
   const WallFacets<D>& facets() const { return facets_; }
   const FacetCells<D>& facet_cells() const { return facet_cells_; }
+  NearFacets<D> near_facets() const { return {facets_, facet_cells_}; }
   const WallPoints<D>& points() const { return points_; }
   const CellList<D>& cells() const { return cells_; }
   // rigid velocity of each wall at the last move_to (zero for fixed walls)
