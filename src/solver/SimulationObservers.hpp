@@ -272,10 +272,12 @@ void Simulation<D>::update_free_surface() {
   for (const LevelSpan<D>& L : levels()) {
     if (flags && L.end > L.active_end)
       Kokkos::deep_copy(Kokkos::subview(p_.get(field::FreeSurface{}), std::make_pair(L.active_end, L.end)), 0.0);
-    if (L.active_end == L.first) continue;
-    if (walls)
+    // gamma of every particle of the level, its guards included, even on a rank that holds
+    // only guards of it (the snapshot would otherwise depend on the rank count)
+    if (walls && L.end > L.first)
       Kokkos::parallel_for("ondine::NFM::shepard_gamma", Kokkos::RangePolicy<ExecSpace>(L.first, L.end),
                            ShepardGammaPass<D>{walls_.facets(), walls_.facet_cells(), L.R, domain_.box(), x, p_.get(field::ShepardGamma{})});
+    if (L.active_end == L.first) continue;
     if (!flags) continue;
     scheme_.free_surface(pass_context(L));
   }
