@@ -247,8 +247,8 @@ struct DaughterFill {
 // of the level interface. Instead the family is moved along the wall's normal until
 // its centre is dx_m/2 from the wall, so that its daughters sit dx_f/2 and 3 dx_f/2
 // from it, as on a fine lattice (each facet, segment or triangle, whose span holds the
-// mother's projection and that is closer than dx_m/2, periodic images included; two
-// sweeps, for the second wall of a corner). Velocity and density keep their prolongation
+// mother's projection and that is closer than dx_m/2, periodic images included; one
+// sweep per wall of a corner, D in all). Velocity and density keep their prolongation
 // (5.22), so the family's momentum is unchanged; the shift is below dx_m/2.
 template <int D>
 struct DaughterWallClearance {
@@ -265,7 +265,7 @@ struct DaughterWallClearance {
     const Vec<D> xm = load<D>(x, mi);
     const double half = 0.5 * zones.dx[birth(mi)];
     Vec<D> centre = xm;
-    for (int sweep = 0; sweep < 2; ++sweep) {  // the second for the other wall of a corner (or edge, in 3D)
+    for (int sweep = 0; sweep < D; ++sweep) {  // one per wall of a corner: 2 in 2D, 3 in 3D
       double d_min = half;
       bool hit = false;
       Vec<D> n_hit = Vec<D>::zero();
