@@ -16,6 +16,7 @@
 #include "io/AtomicFile.hpp"
 #include "io/Checkpoint.hpp"
 #include "scene/CaseFile.hpp"
+#include "scene/MemoryEstimate.hpp"
 #include "solver/Runner.hpp"
 
 namespace {
@@ -89,6 +90,7 @@ int run_app(int argc, char** argv, int ranks, int rank) {
                  scene.name.c_str(), scene.dimension, scene.dx, scene.c0, ranks, ranks > 1 ? "s" : "",
                  ondine::default_backend().c_str(), ondine::backend_threads(), opt.out_dir.c_str(),
                  restart.empty() ? "" : ", restart from ", restart.c_str());
+  if (rank == 0) std::fprintf(stderr, "ondine: %s\n", ondine::estimate_memory(scene).summary().c_str());
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   ondine::RunReport r;

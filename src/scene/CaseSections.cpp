@@ -1,9 +1,10 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-#include <unistd.h>
 
 #include "scene/CaseSections.hpp"
+
+#include "scene/MemoryEstimate.hpp"
 
 namespace ondine::case_file {
 
@@ -14,10 +15,6 @@ KernelType kernel_of(const std::string& s) {
   if (s == "cubic_spline") return KernelType::CubicSpline;
   return KernelType::WendlandC2;
 }
-
-// Bytes per particle of the largest scheme (fields + RK4 stage copies + neighbour
-// cells), a deliberately generous bound for the memory check.
-constexpr double bytes_per_particle(int dim) { return 8.0 * (6.0 * dim + 12.0) + 64.0; }
 
 }  // namespace
 
@@ -220,23 +217,19 @@ void read_checkpoint(const Reader& r, YAML::Node& root, Scene& s) {
   }
 }
 
-// memory: refuse a particle count that cannot fit before anything is allocated
+// memory: refuse a case that cannot fit on this machine before anything is allocated
+// (scene/MemoryEstimate.hpp: the particles, the refinement zones' bound, the walls)
 void check_memory(const Reader& r, YAML::Node& root, const Scene& s) {
-  const int D = s.dimension;
   const YAML::Node disc = root["discretisation"];
-  double n = 0;
-  for (const FluidBlock& b : s.blocks) {
-    double c = 1;
-    for (int k = 0; k < D; ++k) c *= std::round((b.box.max[k] - b.box.min[k]) / s.dx);
-    n += c;
-  }
-  const double mem = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
-  if (n * bytes_per_particle(D) > 0.8 * mem || n > 2147483647.0) {
+  const MemoryEstimate e = estimate_memory(s);
+  const double per_rank = (e.particles + e.refined_particles) / e.ranks;
+  if (e.bytes_here > 0.8 * e.machine_bytes || per_rank > 2147483647.0) {
     std::ostringstream m;
     m.precision(3);
-    m << "the fluid blocks need " << n << " particles (about " << n * bytes_per_particle(D) / 1073741824.0
-      << " GiB), more than 80% of this machine's " << mem / 1073741824.0
-      << " GiB or than 2^31 - 1 particles per rank; expected a larger dx";
+    m << "the case needs about " << e.bytes_here / 1073741824.0 << " GiB on this machine, more than 80% of its "
+      << e.machine_bytes / 1073741824.0 << " GiB, or more than 2^31 - 1 particles per rank (" << e.breakdown()
+      << "); expected a larger dx" << (e.refined_particles > 0 ? ", smaller refinement zones" : "")
+      << (e.ranks_here > 1 ? " or fewer ranks on this machine" : "");
     r.fail(disc["dx"], "discretisation.dx", m.str());
   }
 }

@@ -1,0 +1,93 @@
+#include "scene/MemoryEstimate.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace ondine {
+
+namespace {
+
+int env_int(const char* name, int fallback) {
+  const char* v = std::getenv(name);
+  if (!v) return fallback;
+  const int n = std::atoi(v);
+  return n > 0 ? n : fallback;
+}
+
+double triangle_area(const WallMesh& m, const std::array<int, 3>& t) {
+  const auto& a = m.vertices[t[0]];
+  const auto& b = m.vertices[t[1]];
+  const auto& c = m.vertices[t[2]];
+  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+}
+
+}  // namespace
+
+MemoryEstimate estimate_memory(const Scene& s) {
+  MemoryEstimate e;
+  const int D = s.dimension;
+  for (const FluidBlock& b : s.blocks) {
+    double c = 1;
+    for (int k = 0; k < D; ++k) c *= std::round((b.box.max[k] - b.box.min[k]) / s.dx);
+    e.particles += c;
+  }
+  // each zone of level l, widened by its guard layer (transition R_{l-1}) and clipped to the
+  // domain, full of particles at dx / 2^l: a bound for a zone that moves or that fills up
+  for (const RefinementZone& z : s.refinement_zones) {
+    const double dx_l = s.dx / std::pow(2.0, z.level), layer = s.refinement_transition * s.R() / std::pow(2.0, z.level - 1);
+    double c = 1;
+    for (int k = 0; k < D; ++k) {
+      const double lo = std::max(z.box.min[k] - layer, s.domain.min[k]), hi = std::min(z.box.max[k] + layer, s.domain.max[k]);
+      c *= std::max(0.0, hi - lo) / dx_l;
+    }
+    e.refined_particles += c;
+  }
+  if (D == 3) {
+    const double h = s.wall_quadrature_spacing > 0 ? s.wall_quadrature_spacing : 0.5 * s.dx;
+    for (const Wall& w : s.walls)
+      for (const auto& t : w.mesh.triangles) e.wall_points += triangle_area(w.mesh, t) / (h * h);
+  } else {
+    const double h = s.wall_quadrature_spacing > 0 ? s.wall_quadrature_spacing : 0.25 * s.dx;
+    for (const Wall& w : s.walls)
+      for (std::size_t i = 0; i + 1 < w.points.size() + (w.closed ? 1 : 0); ++i) {
+        const auto& a = w.points[i];
+        const auto& b = w.points[(i + 1) % w.points.size()];
+        e.wall_points += std::hypot(b[0] - a[0], b[1] - a[1]) / h;
+      }
+  }
+  // the stored neighbour lists grow with the neighbours in a support: (R / 3 dx)^D
+  const double support = std::max(1.0, std::pow(s.R_over_dx / 3.0, D));
+  e.bytes_per_particle = (D == 3 ? kBytesPerParticle3D : kBytesPerParticle2D) * support;
+  e.bytes_per_refined_particle = (D == 3 ? kBytesPerRefinedParticle3D : kBytesPerRefinedParticle2D) * support;
+  e.ranks = env_int("OMPI_COMM_WORLD_SIZE", 1);
+  e.ranks_here = std::min(env_int("OMPI_COMM_WORLD_LOCAL_SIZE", e.ranks), e.ranks);
+  const double share = static_cast<double>(e.ranks_here) / e.ranks;  // of the particles, on this machine
+  e.bytes_here = share * (e.particles * e.bytes_per_particle + e.refined_particles * e.bytes_per_refined_particle) +
+                 e.ranks_here * (e.wall_points * kBytesPerWallPoint + kBytesPerRank);
+  e.machine_bytes = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  return e;
+}
+
+std::string MemoryEstimate::breakdown() const {
+  char b[400];
+  int n = std::snprintf(b, sizeof b, "%.4g particles x %.0f B", particles, bytes_per_particle);
+  if (refined_particles > 0)
+    n += std::snprintf(b + n, sizeof b - n, ", refinement zones up to %.4g particles x %.0f B", refined_particles, bytes_per_refined_particle);
+  if (wall_points > 0) n += std::snprintf(b + n, sizeof b - n, ", %.4g wall points x %.0f B per rank", wall_points, kBytesPerWallPoint);
+  std::snprintf(b + n, sizeof b - n, ", %d of %d rank%s on this machine", ranks_here, ranks, ranks > 1 ? "s" : "");
+  return b;
+}
+
+std::string MemoryEstimate::summary() const {
+  char b[120];
+  std::snprintf(b, sizeof b, "memory: about %.3g GiB of this machine's %.3g GiB (", bytes_here / 1073741824.0, machine_bytes / 1073741824.0);
+  return b + breakdown() + ")";
+}
+
+}  // namespace ondine
