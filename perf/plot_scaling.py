@@ -16,12 +16,17 @@ for kind in ("strong", "weak"):
         p = r["ranks"]
         e = t1 / (p * r["seconds_per_step"]) if kind == "strong" else t1 / r["seconds_per_step"]
         rows.append((kind, p, r["particles"], r["seconds_per_step"], r["particle_steps_per_second"], e,
-                     r["exchange_share"], r["balance_tau"], r["checkpoint_seconds_per_million"]))
+                     r.get("halo_share", r["exchange_share"]), r.get("migration_share", 0.0), r.get("rebalance_share", 0.0),
+                     r["balance_tau"], r["checkpoint_seconds_per_million"], r.get("oversubscribed", False)))
+dim = runs[0].get("dimension", 2) if runs else 2
 with open(stem + ".md", "w") as f:
-    f.write("| scaling | ranks | particles | s/step | particle-steps/s | efficiency | halo+migration share | tau | checkpoint s per 1e6 particles |\n")
-    f.write("|---|---|---|---|---|---|---|---|---|\n")
+    f.write("| scaling | ranks | particles | s/step | particle-steps/s | efficiency | halo share | migration share | rebalance share | tau | checkpoint s per 1e6 particles |\n")
+    f.write("|---|---|---|---|---|---|---|---|---|---|---|\n")
     for r in rows:
-        f.write("| %s | %d | %d | %.4g | %.3g | %.3f | %.3f | %.3f | %.3g |\n" % r)
+        ranks = "%d (oversubscribed)" % r[1] if r[11] else "%d" % r[1]
+        f.write("| %s | %s | %d | %.4g | %.3g | %.3f | %.3f | %.3f | %.3f | %.3f | %.3g |\n" % ((r[0], ranks) + r[2:11]))
+    if any(r[11] for r in rows):
+        f.write("\nOversubscribed: more ranks than cores, so the ranks share cores; their efficiency measures the overhead, not scaling.\n")
 try:
     import matplotlib
 
@@ -38,7 +43,7 @@ try:
     ax.set_ylim(0, 1.1)
     ax.grid(True, alpha=0.3)
     ax.legend()
-    ax.set_title("2D dam break")
+    ax.set_title("3D dam break (SPHERIC Test 2)" if dim == 3 else "2D dam break")
     fig.tight_layout()
     fig.savefig(stem + ".png", dpi=90)
 except ImportError:

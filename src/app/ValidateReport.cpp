@@ -78,6 +78,7 @@ bool write_snapshot_profile(const Scene& s, const std::string& dir, std::ostring
 }
 
 // the last probe's pressure over time (probes.csv), relative L2 difference to the fine run's
+// (the runs must have written the same output times)
 void probe_pressure_difference(const std::string& pa, const std::string& pb, nlohmann::json& e) {
   namespace fs = std::filesystem;
   std::vector<std::vector<double>> a, b;
@@ -85,8 +86,18 @@ void probe_pressure_difference(const std::string& pa, const std::string& pb, nlo
     a = reference::read_table(pa);
     b = reference::read_table(pb);
   }
-  if (!a.empty() && a.size() == b.size() && a.front().size() >= 6 && a.front().size() == b.front().size()) {
-    const std::size_t col = a.front().size() - 2 - 2;  // <probe>.pressure of the last probe (2D)
+  // the column of the last probe's pressure, from the header (time, step, then per probe
+  // pressure, density and the D velocity components)
+  std::size_t col = 0;
+  if (!a.empty()) {
+    std::ifstream in(pa);
+    std::string header, name;
+    std::getline(in, header);
+    std::istringstream cols(header);
+    for (std::size_t k = 0; std::getline(cols, name, ','); ++k)
+      if (name.size() > 9 && name.compare(name.size() - 9, 9, ".pressure") == 0) col = k;
+  }
+  if (col > 0 && a.size() == b.size() && a.front().size() > col && a.front().size() == b.front().size()) {
     double num = 0, den = 0;
     for (std::size_t k = 0; k < a.size(); ++k) {
       num += (a[k][col] - b[k][col]) * (a[k][col] - b[k][col]);

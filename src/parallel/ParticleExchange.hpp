@@ -242,7 +242,7 @@ class ParticleExchange {
         },
         static_cast<std::size_t>(kept + received));
     migrated_ += comm.sum(static_cast<std::int64_t>(leaving));
-    seconds_ += timer.seconds();
+    migration_seconds_ += timer.seconds();
     return kept + received;
   }
 
@@ -274,7 +274,7 @@ class ParticleExchange {
     for (int c : recv_counts_) n_halo_ += c;
     p.resize(static_cast<std::size_t>(n_own + n_halo_));
     refresh(p, comm, field::Position{}, field::Velocity{}, field::Density{}, field::Mass{}, field::GlobalId{});
-    seconds_ += timer.seconds();
+    halo_seconds_ += timer.seconds();
   }
 
   // New values of the given fields in every halo copy.
@@ -306,12 +306,14 @@ class ParticleExchange {
       col += width_of<V>();
     };
     (unpack(tags), ...);
-    seconds_ += timer.seconds();
+    halo_seconds_ += timer.seconds();
   }
 
   int halo_count() const { return n_halo_; }
   std::int64_t migrated() const { return migrated_; }  // particles moved between ranks, all ranks, so far
-  double seconds() const { return seconds_; }          // wall time in migration and halo exchange
+  double seconds() const { return migration_seconds_ + halo_seconds_; }  // wall time in migration and halo exchange
+  double migration_seconds() const { return migration_seconds_; }
+  double halo_seconds() const { return halo_seconds_; }  // halo builds and refreshes
 
  private:
   // send and receive buffers of the halo refreshes, by row width, kept between calls
@@ -345,7 +347,7 @@ class ParticleExchange {
   int n_own_ = 0, n_halo_ = 0;
   double len_[D] = {};
   std::int64_t migrated_ = 0;
-  double seconds_ = 0;
+  double migration_seconds_ = 0, halo_seconds_ = 0;
 };
 
 }  // namespace ondine

@@ -145,9 +145,11 @@ class Domain {
     tau_ = balance_indicator(work);
     if (may_rebalance && tau_ < std::min(scene.rebalance_threshold, achieved_tau_ - 0.05)) {
       const double before = tau_;
+      Kokkos::Timer timer;
       bisect();
       ++rebalances_;
       relist();
+      rebalance_seconds_ += timer.seconds();
       achieved_tau_ = tau_;
       if (comm_.rank() == 0)
         std::fprintf(stderr, "ondine: step %lld: rebalanced, tau %.3f -> %.3f\n", static_cast<long long>(step), before, tau_);
@@ -155,6 +157,7 @@ class Domain {
   }
   double balance() const { return tau_; }
   int rebalances() const { return rebalances_; }
+  double rebalance_seconds() const { return rebalance_seconds_; }  // new bisections and the list rebuilds they cause
 
   // owned particles sorted by cell for memory locality; halos are dropped (the next list
   // build brings them back)
@@ -191,6 +194,7 @@ class Domain {
   std::int64_t builds_ = 0;
   double tau_ = 1.0, achieved_tau_ = 2.0;
   int rebalances_ = 0;
+  double rebalance_seconds_ = 0;
 };
 
 }  // namespace ondine

@@ -168,7 +168,11 @@ nlohmann::json run_summary(const Scene& scene, const RunOptions& opt, const Simu
                    {"rebalances", sim.rebalances()},
                    {"migrated_particles", sim.migrated()},
                    {"exchange_seconds_max", comm.max(sim.exchange_seconds())},
-                   {"exchange_share_of_loop", loop_seconds > 0 ? comm.max(sim.exchange_seconds()) / loop_seconds : 0.0}};
+                   {"exchange_share_of_loop", loop_seconds > 0 ? comm.max(sim.exchange_seconds()) / loop_seconds : 0.0},
+                   // the slowest rank's time in each, over the loop's (a rebalance's migration and halos count in both)
+                   {"halo_share_of_loop", loop_seconds > 0 ? comm.max(sim.halo_seconds()) / loop_seconds : 0.0},
+                   {"migration_share_of_loop", loop_seconds > 0 ? comm.max(sim.migration_seconds()) / loop_seconds : 0.0},
+                   {"rebalance_share_of_loop", loop_seconds > 0 ? comm.max(sim.rebalance_seconds()) / loop_seconds : 0.0}};
   j["checkpoints"] = checkpoints.summary();
   if (sim.refinement_on()) {
     const AdaptiveRefinement<D>& apr = sim.refinement();

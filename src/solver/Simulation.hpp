@@ -105,6 +105,9 @@ class Simulation {
   int rebalances() const { return domain_.rebalances(); }
   std::int64_t migrated() const { return domain_.exchange().migrated(); }
   double exchange_seconds() const { return domain_.exchange().seconds(); }
+  double halo_seconds() const { return domain_.exchange().halo_seconds(); }
+  double migration_seconds() const { return domain_.exchange().migration_seconds(); }
+  double rebalance_seconds() const { return domain_.rebalance_seconds(); }
   int halo_count() const { return domain_.exchange().halo_count(); }
   const Decomposition& decomposition() const { return domain_.decomposition(); }
   // the neighbour list is rebuilt at the next evaluation (a checkpoint does it, so
