@@ -48,12 +48,19 @@ MemoryEstimate estimate_memory(const Scene& s) {
     }
     e.refined_particles += c;
   }
+  // 2D: every level at the finest level's dx / 4 (solver/SimulationSetup.hpp)
+  const double dx_finest = s.dx / std::pow(2.0, s.max_refinement_level());
   if (D == 3) {
-    const double h = s.wall_quadrature_spacing > 0 ? s.wall_quadrature_spacing : 0.5 * s.dx;
+    // each level's own quadrature (solver/SimulationLists.hpp, build_level_walls)
+    double area = 0;
     for (const Wall& w : s.walls)
-      for (const auto& t : w.mesh.triangles) e.wall_points += triangle_area(w.mesh, t) / (h * h);
+      for (const auto& t : w.mesh.triangles) area += triangle_area(w.mesh, t);
+    for (int l = 0; l <= s.max_refinement_level(); ++l) {
+      const double h = s.wall_quadrature_spacing > 0 ? s.wall_quadrature_spacing : 0.5 * s.dx / std::pow(2.0, l);
+      e.wall_points += area / (h * h);
+    }
   } else {
-    const double h = s.wall_quadrature_spacing > 0 ? s.wall_quadrature_spacing : 0.25 * s.dx;
+    const double h = s.wall_quadrature_spacing > 0 ? s.wall_quadrature_spacing : 0.25 * dx_finest;
     for (const Wall& w : s.walls)
       for (std::size_t i = 0; i + 1 < w.points.size() + (w.closed ? 1 : 0); ++i) {
         const auto& a = w.points[i];

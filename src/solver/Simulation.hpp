@@ -76,7 +76,8 @@ struct LevelSpan {
   int first = 0, active_end = 0, end = 0;  // SPH particles [first, active_end), guards [active_end, end)
   double R = 0, dx = 0;
   NeighbourList<D> list;   // the level's SPH pairs (L. with zones; the uniform list otherwise)
-  CellList<D> wall_cells;  // wall points binned at R
+  WallPoints<D> wall;      // the wall quadrature points of the level (its spacing)
+  CellList<D> wall_cells;  // those points binned at R
 };
 
 template <int D>
@@ -210,7 +211,7 @@ class Simulation {
   long space_guards();  // kernels/apr/GuardSpacing.hpp: the daughter guards shifted once per step
   void refinement_bookkeeping();
   void refresh_guard_halos();       // several ranks: the interpolated fields of the guards' halo copies
-  void build_level_wall_cells();
+  void build_level_walls();
   // evaluation (solver/SimulationEvaluate.hpp)
   void update_walls(double t);
   bool consistent_laplacian() const;
@@ -253,7 +254,10 @@ class Simulation {
   AdaptiveRefinement<D> apr_;
   bool apr_on_ = false;
   Kokkos::View<double* [D], Kokkos::LayoutRight, MemSpace> guard_shift_;  // per particle: GuardSpacing's shift
-  std::vector<CellList<D>> level_wall_cells_;  // APR with walls: wall points binned at each level's radius
+  // APR with walls: the walls of each level l >= 1, their quadrature at the level's spacing
+  // (3D; in 2D at the finest level's, as level 0's) and their points binned at R_l
+  std::vector<WallModel<D>> level_walls_;
+  bool quadrature_default_ = true;  // the case left discretisation.wall_quadrature_spacing to its default
 };
 
 // An output instant of a simulation, as a scope: while the frame lives, the simulation's

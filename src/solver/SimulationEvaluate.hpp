@@ -18,7 +18,11 @@ namespace ondine {
 
 template <int D>
 void Simulation<D>::update_walls(double t) {
-  if (walls_.moving()) walls_.move_to(t);
+  if (walls_.moving()) {
+    walls_.move_to(t);
+    for (WallModel<D>& w : level_walls_)
+      if (!w.empty()) w.move_to(t);
+  }
   region_.facets = walls_.facets();
   region_.cells = walls_.facet_cells();
 }
@@ -95,7 +99,7 @@ PassContext<D> Simulation<D>::pass_context(const LevelSpan<D>& L) const {
   take(c.gamma, field::ShepardGamma{});
   take(c.drho, field::DensityRate{});
   take(c.free_surface, field::FreeSurface{});
-  c.wall = walls_.points();
+  c.wall = L.wall;
   c.facets = walls_.facets();
   c.facet_cells = walls_.facet_cells();
   c.weights = laplacian_weights_;
@@ -124,7 +128,6 @@ void Simulation<D>::evaluate() {
     apr_.interpolate(p_, domain_.box(), false, walls_.near_facets());  // guards from this stage's SPH particles (5.24)
     // several ranks: the guards' halo copies (their density gradient travels after the gradient pass)
     domain_.refresh(p_, field::Velocity{}, field::Density{});
-    if (walls && (walls_.moving() || level_wall_cells_.empty())) build_level_wall_cells();
   }
   FluxArgs<D> a = state_flux_args(n);
   with_eos<D>(scene_, [&](auto eos) { update_pressure<D>(eos, a.rho, a.P, n_all); });
@@ -155,7 +158,7 @@ void Simulation<D>::evaluate() {
     a.av_alpha_R_c0 = scene_.artificial_viscosity * L.R * scene_.c0;
     scheme_.flux(a);
     if (walls)
-      scheme_.wall_flux(WallFluxArgs<D>{a, walls_.points(), L.wall_cells, gamma, laplacian_weights_, weos, scene_.nu, 0.5 * L.dx,
+      scheme_.wall_flux(WallFluxArgs<D>{a, L.wall, L.wall_cells, gamma, laplacian_weights_, weos, scene_.nu, 0.5 * L.dx,
                                  scene_.wall_velocity_reconstruction});
     // replaces the plain divergence of (4.23)/(4.25) by the renormalised one (kernels/RenormalisedContinuity.hpp)
     if (scene_.renormalised_continuity) scheme_.renormalised_continuity(pass_context(L));

@@ -15,12 +15,14 @@ template <int D>
 std::vector<LevelSpan<D>> Simulation<D>::levels() const {
   std::vector<LevelSpan<D>> out;
   if (!apr_on_) {
-    out.push_back({0, 0, n_own_, n_own_, R_, scene_.dx, domain_.list(), walls_.cells()});
+    out.push_back({0, 0, n_own_, n_own_, R_, scene_.dx, domain_.list(), walls_.points(), walls_.cells()});
     return out;
   }
-  for (int l = 0; l < apr_.levels(); ++l)
-    out.push_back({l, apr_.first(l), apr_.active_end(l), apr_.end(l), apr_.R(l), apr_.dx(l), apr_.symmetric_list(),
-                   l == 0 || level_wall_cells_.empty() ? walls_.cells() : level_wall_cells_[l]});
+  for (int l = 0; l < apr_.levels(); ++l) {
+    const WallModel<D>& w = l == 0 || l >= static_cast<int>(level_walls_.size()) ? walls_ : level_walls_[l];
+    out.push_back({l, apr_.first(l), apr_.active_end(l), apr_.end(l), apr_.R(l), apr_.dx(l), apr_.symmetric_list(), w.points(),
+                   w.cells()});
+  }
   return out;
 }
 
@@ -233,7 +235,6 @@ long Simulation<D>::space_guards() {
   if (static_cast<int>(guard_shift_.extent(0)) < n_all)
     guard_shift_ = Kokkos::View<double* [D], Kokkos::LayoutRight, MemSpace>("ondine::APR::guard_shift", n_all + n_all / 8);
   const bool walls = !walls_.empty();
-  if (walls && level_wall_cells_.empty()) build_level_wall_cells();
   const auto x = p_.get(field::Position{});
   const std::vector<LevelSpan<D>> spans = levels();
   for (int l = mothers ? 0 : 1; l < apr_.levels(); ++l) {
@@ -256,13 +257,21 @@ long Simulation<D>::space_guards() {
   return total;
 }
 
-// Cell lists of the wall points with cells of level l's radius (l >= 1): a fine
-// particle then visits the wall points of its own neighbourhood, not of the coarse one.
+// The walls of each level l >= 1 (set-up): their quadrature at the level's default spacing
+// (2D: the finest level's dx / 4, as level 0's; 3D: kWallQuadratureSpacing3D dx_l, so that
+// level 0 keeps the coarse points and the fine level has the points of a uniform run at
+// dx_l), or at the case's wall_quadrature_spacing, binned with cells of R_l: a particle
+// visits the wall points of its own neighbourhood at its level's spacing.
 template <int D>
-void Simulation<D>::build_level_wall_cells() {
-  level_wall_cells_.resize(apr_.levels());
-  for (int l = 1; l < apr_.levels(); ++l)
-    level_wall_cells_[l].build(make_cell_grid(domain_.box(), apr_.R(l)), walls_.points().x, walls_.points().count);
+void Simulation<D>::build_level_walls() {
+  const int levels = scene_.max_refinement_level() + 1;
+  level_walls_.clear();
+  level_walls_.resize(levels);
+  for (int l = 1; l < levels; ++l) {
+    Scene s = scene_;
+    if (D == 3 && quadrature_default_) s.wall_quadrature_spacing = kWallQuadratureSpacing3D * scene_.dx / (1 << l);
+    level_walls_[l] = WallModel<D>(s, domain_.box(), R_ / (1 << l));
+  }
 }
 
 }  // namespace ondine

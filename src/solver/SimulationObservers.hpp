@@ -267,7 +267,6 @@ void Simulation<D>::update_free_surface() {
     ensure_neighbours();
     domain_.refresh_state_halos(p_);
   }
-  if (walls && apr_on_ && level_wall_cells_.empty()) build_level_wall_cells();
   const auto x = p_.get(field::Position{});
   for (const LevelSpan<D>& L : levels()) {
     if (flags && L.end > L.active_end)

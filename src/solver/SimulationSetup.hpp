@@ -26,7 +26,9 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
   if (apr_on_) {
     if (restart && !restart->header.refinement.present)
       throw std::logic_error("Simulation<D>: a checkpoint without the APR state for a scene with refinement zones");
-    if (scene_.wall_quadrature_spacing == 0) scene_.wall_quadrature_spacing = dx_finest / 4;
+    // 2D: every level's walls at the finest level's dx / 4 (3D: each level at its own spacing, build_level_walls)
+    quadrature_default_ = scene_.wall_quadrature_spacing == 0;
+    if (D == 2 && scene_.wall_quadrature_spacing == 0) scene_.wall_quadrature_spacing = dx_finest / 4;
   }
   domain_ = Domain<D>(scene_, R_ + skin_len_, skin_len_);
   // this rank's share of the lattice or of the checkpoint; migrate() then sends
@@ -52,6 +54,7 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
   if (free_surface_possible) p_.allocate(field::FreeSurface{});
   if (walls) {
     walls_ = WallModel<D>(scene_, domain_.box(), R_);
+    if (apr_on_) build_level_walls();
     build_fluid_region();
   }
   if (restart) {
