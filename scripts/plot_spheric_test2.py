@@ -45,6 +45,10 @@ def main():
         with open(os.path.join(run, "summary.json")) as f:
             s = json.load(f)
         label = "dx = %g m, %d particles, %.0f s" % (s["scheme"]["dx"], s["particles"], s["wall_seconds"])
+        if "refinement" in s:  # APR: the coarse dx, the finest, and the most particles of one snapshot
+            r = s["refinement"]
+            label = "APR dx = %g / %g m, %d particles at the end, %.0f s" % (
+                s["scheme"]["dx"], s["scheme"]["dx"] / 2 ** (r["levels"] - 1), r["particles"], s["wall_seconds"])
         for ax, (name, file, column, _) in zip(axes.flat, panels):
             d = read_csv(os.path.join(run, file))
             ax.plot(d["time"], d[column], lw=0.8, label=label)

@@ -48,7 +48,15 @@ def ghia(src, name, column):
 
 
 def error_panel(ax, rs):
-    names = sorted({k for r in rs for k in r["thresholds"] if r["errors"].get(k, 0) > 0})
+    # the bounded errors, and the relative errors shown without a bound (name *_error, not a
+    # time); the stability figures (max_*, counts) only where a case has no accuracy error
+    bounded = {k for r in rs for k in r["thresholds"] if r["errors"].get(k, 0) > 0}
+    shown = {k for r in rs for k in r["errors"] if k.endswith("_error") and not k.endswith("time_error") and r["errors"][k] > 0}
+    stability = {"max_density_deviation", "max_kinetic_energy_ratio", "max_outside_domain", "non_finite", "wall_crossings", "wall_leaks"}
+    names = bounded | shown
+    if names - stability:
+        names -= stability
+    names = sorted(names)
     for name in names:
         pts = [(r["wall_seconds"], r["errors"][name]) for r in rs if r["errors"].get(name, 0) > 0]
         ax.loglog(*zip(*pts), "o-", label=name)
