@@ -32,7 +32,7 @@ stamp=$(date +%Y%m%d-%H%M%S)
 json="$out/scaling-$stamp.json"; work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 export OMP_NUM_THREADS=1 OMP_PROC_BIND=spread OMP_PLACES=threads
 py=${PYTHON:-/usr/bin/python3}  # Debian's, with python3-matplotlib
-cores=$(nproc)
+cores=$(getconf _NPROCESSORS_ONLN)  # not nproc, which reads OMP_NUM_THREADS
 if [ "$dim" = 3 ]; then
   case_file="$here/cases/spheric_test2_3d.yaml"
   dx_for() { "$py" -c "print((1.228 * 1.0 * 0.55 / $1) ** (1.0 / 3.0))"; }  # the column is 1.228 x 1 x 0.55 m
