@@ -53,25 +53,9 @@ std::string taylor_green_box(const std::string& scheme) {
          "time: {duration: 1, output_interval: 1}\n";
 }
 
-struct HostState {
-  Kokkos::View<double* [2], Kokkos::LayoutLeft, Kokkos::HostSpace> x, u;
-  Kokkos::View<double*, Kokkos::HostSpace> rho, P, m;
-  Kokkos::View<int*, Kokkos::HostSpace> guard, birth, mother;
-};
+using HostState = test::AprHostState<2>;
 
-HostState host_state(const Simulation<2>& sim) {
-  const auto& p = sim.particles();
-  HostState h;
-  h.x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Position{}));
-  h.u = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Velocity{}));
-  h.rho = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Density{}));
-  h.P = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Pressure{}));
-  h.m = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Mass{}));
-  h.guard = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::AprGuard{}));
-  h.birth = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::AprBirthLevel{}));
-  h.mother = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::AprMother{}));
-  return h;
-}
+HostState host_state(const Simulation<2>& sim) { return test::apr_host_state(sim); }
 
 }  // namespace
 

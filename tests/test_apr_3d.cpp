@@ -19,27 +19,9 @@ using namespace ondine;
 
 namespace {
 
-struct HostState3 {
-  Kokkos::View<double* [3], Kokkos::LayoutLeft, Kokkos::HostSpace> x, u;
-  Kokkos::View<double*, Kokkos::HostSpace> rho, P, m;
-  Kokkos::View<int*, Kokkos::HostSpace> guard, birth, mother;
-  Kokkos::View<std::int64_t*, Kokkos::HostSpace> parent;
-};
+using HostState3 = test::AprHostState<3>;
 
-HostState3 host_state(const Simulation<3>& sim) {
-  const auto& p = sim.particles();
-  HostState3 h;
-  h.x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Position{}));
-  h.u = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Velocity{}));
-  h.rho = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Density{}));
-  h.P = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Pressure{}));
-  h.m = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Mass{}));
-  h.guard = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::AprGuard{}));
-  h.birth = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::AprBirthLevel{}));
-  h.mother = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::AprMother{}));
-  h.parent = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::AprParent{}));
-  return h;
-}
+HostState3 host_state(const Simulation<3>& sim) { return test::apr_host_state(sim); }
 
 // A periodic channel 0.3 x 0.2 x 0.2 m (dx 0.02 m) of fluid moving at `speed` along x, with
 // one static refinement box 0.06 m a side in the middle, linear EOS with a background

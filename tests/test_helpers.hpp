@@ -1,5 +1,6 @@
 #pragma once
 #include <cmath>
+#include <cstdint>
 #include <random>
 #include <string>
 #include <utility>
@@ -47,6 +48,32 @@ void disorder(Simulation<D>& sim, double amp, double speed, double rho_jitter, u
   Kokkos::deep_copy(p.get(field::Position{}), hx);
   Kokkos::deep_copy(p.get(field::Velocity{}), hu);
   Kokkos::deep_copy(p.get(field::Density{}), hr);
+}
+
+// The particles' fields a refinement test reads, copied to the host.
+template <int D>
+struct AprHostState {
+  Kokkos::View<double* [D], Kokkos::LayoutLeft, Kokkos::HostSpace> x, u;
+  Kokkos::View<double*, Kokkos::HostSpace> rho, P, m;
+  Kokkos::View<int*, Kokkos::HostSpace> guard, birth, mother;
+  Kokkos::View<std::int64_t*, Kokkos::HostSpace> parent;
+};
+
+template <int D>
+AprHostState<D> apr_host_state(const Simulation<D>& sim) {
+  const auto& p = sim.particles();
+  auto host = [](const auto& v) { return Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), v); };
+  AprHostState<D> h;
+  h.x = host(p.get(field::Position{}));
+  h.u = host(p.get(field::Velocity{}));
+  h.rho = host(p.get(field::Density{}));
+  h.P = host(p.get(field::Pressure{}));
+  h.m = host(p.get(field::Mass{}));
+  h.guard = host(p.get(field::AprGuard{}));
+  h.birth = host(p.get(field::AprBirthLevel{}));
+  h.mother = host(p.get(field::AprMother{}));
+  h.parent = host(p.get(field::AprParent{}));
+  return h;
 }
 
 // The surge front (T, Z) = (t sqrt(2 g / a), x_front / a) of the Martin & Moyce dam break
