@@ -2,6 +2,9 @@
 #include <CLI/CLI.hpp>
 #include <Kokkos_Core.hpp>
 #include <mpi.h>
+#ifdef KOKKOS_ENABLE_CUDA
+#include <cuda_runtime.h>
+#endif
 
 #include <unistd.h>
 
@@ -30,7 +33,22 @@ std::string version_text() {
          "; default execution space: " + ondine::default_backend() + ")\n";
 }
 
-int run_app(int argc, char** argv, int ranks, int rank) {
+// Why the CUDA build cannot run here (no device, or a driver older than the runtime), or ""
+// where it can, or in a CPU build. Asked before Kokkos' initialisation, which would throw
+// from inside its CUDA set-up and leave a stack trace.
+std::string cuda_device_problem() {
+#ifdef KOKKOS_ENABLE_CUDA
+  int n = 0;
+  const cudaError_t e = cudaGetDeviceCount(&n);
+  if (e != cudaSuccess) return cudaGetErrorString(e);
+  if (n == 0) return "no CUDA device found";
+#endif
+  return "";
+}
+
+// `no_device`: the CUDA build without a usable device (cuda_device_problem): --help and
+// --version answer, a run or a validation stops before it reads or writes anything.
+int run_app(int argc, char** argv, int ranks, int rank, const std::string& no_device) {
   CLI::App app{"Ondine: data-parallel SPH for free-surface hydrodynamics (Kokkos)", "ondine"};
   const std::string threads_note =
       "Threads: OMP_NUM_THREADS sets their number. Unless OMP_PROC_BIND or OMP_PLACES is set, ondine binds them with "
@@ -59,6 +77,12 @@ int run_app(int argc, char** argv, int ranks, int rank) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
+  }
+  if (!no_device.empty()) {
+    if (rank == 0)
+      std::fprintf(stderr, "ondine: error: this is the CUDA build of ondine, and it needs a CUDA device: %s; build/ondine is the CPU build\n",
+                   no_device.c_str());
+    return 2;
   }
   if (validate->parsed()) {
     if (ranks > 1) {
@@ -153,14 +177,15 @@ int main(int argc, char** argv) {
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   int rc = 0;
-  Kokkos::initialize(argc, argv);
+  const std::string no_device = cuda_device_problem();
+  if (no_device.empty()) Kokkos::initialize(argc, argv);
   try {
-    rc = run_app(argc, argv, ranks, rank);
+    rc = run_app(argc, argv, ranks, rank, no_device);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ondine: error: %s\n", e.what());
     rc = 1;
   }
-  Kokkos::finalize();
+  if (no_device.empty()) Kokkos::finalize();
   MPI_Finalize();
   return rc;
 }
