@@ -60,8 +60,13 @@ def interp(T):
     return z[-1]
 rms = (sum(((interp(T) - Z) / Z) ** 2 for T, Z in pts) / len(pts)) ** 0.5
 s = json.load(open(d + "/summary.json"))
+# pair interactions per second of the flux pass alone: particles x mean neighbours (both ways)
+# x 4 evaluations per RK4 step x steps over the loop's time (the density-gradient and wall
+# passes read the same pairs again and are not counted)
+pairs = s["particles"] * s.get("mean_neighbours", 0.0) * 4 * s["total_steps"] / s["loop_seconds"]
 print(json.dumps({"code": "ondine", "scheme": scheme, "width": int(w), "run": int(r), "wall_seconds": s["wall_seconds"],
                   "loop_seconds": s["loop_seconds"], "steps": s["total_steps"], "particles": s["particles"],
+                  "mean_neighbours": s.get("mean_neighbours", 0.0), "flux_pairs_per_second": pairs,
                   "front_rms_error": rms, "points": len(pts)}))
 PY
     done
@@ -80,7 +85,10 @@ for (w, code, scheme), rs in sorted(groups.items()):
     row = {"width": w, "code": code, "scheme": scheme, "runs": len(rs),
            "wall_seconds_median": statistics.median(x["wall_seconds"] for x in rs)}
     if code == "ondine":
-        row.update(front_rms_error=rs[0]["front_rms_error"], steps=rs[0]["steps"], particles=rs[0]["particles"])
+        row.update(front_rms_error=rs[0]["front_rms_error"], steps=rs[0]["steps"], particles=rs[0]["particles"],
+                   flux_pairs_per_second_median=statistics.median(x["flux_pairs_per_second"] for x in rs))
+        if yard:
+            row["flux_pair_rate_over_yardstick"] = row["flux_pairs_per_second_median"] / statistics.median(yard)
     table.append(row)
 for row in table:
     peer = [p for p in table if p["width"] == row["width"] and p["code"] == "peer"]
