@@ -257,7 +257,6 @@ class Simulation {
   // APR with walls: the walls of each level l >= 1, their quadrature at the level's spacing
   // (3D; in 2D at the finest level's, as level 0's) and their points binned at R_l
   std::vector<WallModel<D>> level_walls_;
-  bool quadrature_default_ = true;  // the case left discretisation.wall_quadrature_spacing to its default
 };
 
 // An output instant of a simulation, as a scope: while the frame lives, the simulation's

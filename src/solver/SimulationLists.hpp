@@ -269,8 +269,9 @@ void Simulation<D>::build_level_walls() {
   level_walls_.resize(levels);
   for (int l = 1; l < levels; ++l) {
     Scene s = scene_;
-    if (D == 3 && quadrature_default_) s.wall_quadrature_spacing = kWallQuadratureSpacing3D * scene_.dx / (1 << l);
-    level_walls_[l] = WallModel<D>(s, domain_.box(), R_ / (1 << l));
+    // (3D: the scene's spacing is still 0 where the case left it to the default)
+    if (D == 3 && scene_.wall_quadrature_spacing == 0) s.wall_quadrature_spacing = kWallQuadratureSpacing3D * scene_.dx / (1 << l);
+    level_walls_[l] = WallModel<D>(s, domain_.box(), R_ / (1 << l), false);
   }
 }
 

@@ -27,7 +27,6 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
     if (restart && !restart->header.refinement.present)
       throw std::logic_error("Simulation<D>: a checkpoint without the APR state for a scene with refinement zones");
     // 2D: every level's walls at the finest level's dx / 4 (3D: each level at its own spacing, build_level_walls)
-    quadrature_default_ = scene_.wall_quadrature_spacing == 0;
     if (D == 2 && scene_.wall_quadrature_spacing == 0) scene_.wall_quadrature_spacing = dx_finest / 4;
   }
   domain_ = Domain<D>(scene_, R_ + skin_len_, skin_len_);

@@ -130,8 +130,8 @@ void add_mesh(const Wall& wall, int w, double hq, HostWalls& h) {
 }  // namespace
 
 template <int D>
-WallModel<D>::WallModel(const Scene& scene, const PeriodicBox<D>& box, double cutoff)
-    : walls_(scene.walls), box_(box), cutoff_(cutoff) {
+WallModel<D>::WallModel(const Scene& scene, const PeriodicBox<D>& box, double cutoff, bool facet_cells)
+    : walls_(scene.walls), box_(box), cutoff_(cutoff), with_facet_cells_(facet_cells) {
   if (walls_.empty()) return;
   const double hq = scene.wall_quadrature_spacing > 0 ? scene.wall_quadrature_spacing
                                                       : (D == 2 ? scene.dx / 4 : kWallQuadratureSpacing3D * scene.dx);
@@ -194,7 +194,7 @@ WallModel<D>::WallModel(const Scene& scene, const PeriodicBox<D>& box, double cu
     Kokkos::deep_copy(n_in0_, facets_.n_in);
     Kokkos::deep_copy(n_out0_, points_.n_out);
   }
-  facet_cells_ = make_facet_cells<D>(box_, cutoff_, host_a_, host_b_, host_c_, host_facet_wall_);
+  if (with_facet_cells_) facet_cells_ = make_facet_cells<D>(box_, cutoff_, host_a_, host_b_, host_c_, host_facet_wall_);
   move_to(0.0);
 }
 
@@ -342,7 +342,7 @@ void WallModel<D>::move_to(double t) {
     Kokkos::deep_copy(wall_spin_, hs);
     Kokkos::deep_copy(wall_velocity_, vel);
     place_points_and_facets(disp, vel, rot);
-    if (away || facets_moved_) {
+    if (with_facet_cells_ && (away || facets_moved_)) {
       // the facet cells of the moved facets, from host copies of the vertices
       std::vector<double> ta(host_a_.size()), tb(host_b_.size()), tc(host_c_.size());
       auto place = [&](const std::vector<double>& from, std::vector<double>& to) {
@@ -410,23 +410,21 @@ void WallModel<D>::place_points_and_facets(const Kokkos::View<double* [D], Kokko
   const auto a = facets_.a, b = facets_.b, c = facets_.c, a0 = seg_a0_, b0 = seg_b0_, c0 = seg_c0_;
   const auto fn = facets_.n_in, fn0 = n_in0_;
   const auto sw = facets_.wall;
+  using Rows = Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>;
   Kokkos::parallel_for("ondine::NFM::move_facets", Kokkos::RangePolicy<ExecSpace>(0, facets_.count), KOKKOS_LAMBDA(const int s) {
     const int w = sw(s);
-    double v0[3] = {0, 0, 0}, v[3] = {0, 0, 0};
-    for (int k = 0; k < D; ++k) v0[k] = a0(s, k);
-    place(w, v0, v);
-    for (int k = 0; k < D; ++k) a(s, k) = v[k];
-    for (int k = 0; k < D; ++k) v0[k] = b0(s, k);
-    place(w, v0, v);
-    for (int k = 0; k < D; ++k) b(s, k) = v[k];
-    if (D == 3) {
-      for (int k = 0; k < D; ++k) v0[k] = c0(s, k);
-      place(w, v0, v);
-      for (int k = 0; k < D; ++k) c(s, k) = v[k];
-    }
-    for (int k = 0; k < D; ++k) v0[k] = fn0(s, k);
-    turn_normal(w, v0, v);
-    for (int k = 0; k < D; ++k) fn(s, k) = v[k];
+    // row s of `to` from row s of `from`: a vertex placed, or the normal turned
+    const auto move = [&](const Rows& from, const Rows& to, const bool normal) {
+      double v0[3] = {0, 0, 0}, v[3] = {0, 0, 0};
+      for (int k = 0; k < D; ++k) v0[k] = from(s, k);
+      if (normal) turn_normal(w, v0, v);
+      else place(w, v0, v);
+      for (int k = 0; k < D; ++k) to(s, k) = v[k];
+    };
+    move(a0, a, false);
+    move(b0, b, false);
+    if (D == 3) move(c0, c, false);
+    move(fn0, fn, true);
   });
 }
 

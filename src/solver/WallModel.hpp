@@ -21,7 +21,10 @@ template <int D>
 class WallModel {
  public:
   WallModel() = default;
-  WallModel(const Scene& scene, const PeriodicBox<D>& box, double cutoff);
+  // facet_cells false: the points and their cells only, for a refinement level's walls (the
+  // facet queries read the base model's facet cells), so no host rebuild of facet cells runs
+  // when the walls move
+  WallModel(const Scene& scene, const PeriodicBox<D>& box, double cutoff, bool facet_cells = true);
 
   bool empty() const { return points_.count == 0; }
   int wall_count() const { return static_cast<int>(names_.size()); }
@@ -63,6 +66,7 @@ class WallModel {
   PeriodicBox<D> box_;
   double cutoff_ = 0;
   bool moving_ = false;
+  bool with_facet_cells_ = true;
 };
 
 // The facet cells of facets at rest, for a cut-off (tests and tools; WallModel keeps its own).
