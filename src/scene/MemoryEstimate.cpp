@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "geometry/TriangleMesh.hpp"
+
 namespace ondine {
 
 namespace {
@@ -16,15 +18,6 @@ int env_int(const char* name, int fallback) {
   if (!v) return fallback;
   const int n = std::atoi(v);
   return n > 0 ? n : fallback;
-}
-
-double triangle_area(const WallMesh& m, const std::array<int, 3>& t) {
-  const auto& a = m.vertices[t[0]];
-  const auto& b = m.vertices[t[1]];
-  const auto& c = m.vertices[t[2]];
-  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-  const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-  return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
 }
 
 }  // namespace
@@ -53,8 +46,7 @@ MemoryEstimate estimate_memory(const Scene& s) {
   if (D == 3) {
     // each level's own quadrature (solver/SimulationLists.hpp, build_level_walls)
     double area = 0;
-    for (const Wall& w : s.walls)
-      for (const auto& t : w.mesh.triangles) area += triangle_area(w.mesh, t);
+    for (const Wall& w : s.walls) area += geometry::total_area(geometry::TriangleMesh{w.mesh.vertices, w.mesh.triangles});
     for (int l = 0; l <= s.max_refinement_level(); ++l) {
       const double h = s.wall_quadrature_spacing > 0 ? s.wall_quadrature_spacing : 0.5 * s.dx / std::pow(2.0, l);
       e.wall_points += area / (h * h);
