@@ -5,16 +5,22 @@
 # (300 x 300, R = 4 dx, 2 threads, median of 3) and, where ../shared/peer/ is present, the
 # peer DualSPHysics 5.4 CPU on its own 2D dam break at the same resolution, alternating
 # runs (peer, then each scheme, RUNS times) and quoting the ratio of the medians.
-# Schemes: "rk4" (the default, acoustic CFL 0.375) and "rk4_cfl0.75" (the same, twice the
-# acoustic step). Writes perf/results/time-to-solution-<date>.json and .png.
-# usage: perf/time_to_solution.sh [--widths "25 50"] [--runs 3] [--out perf/results]
+# Schemes (all RK4): "defaults" (the solver's defaults: acoustic CFL 0.375, the density gradient
+# at every stage), "cfl0.75" (twice the acoustic step; skipped at widths of 100 and more) and
+# "case" (the case file as shipped: CFL 0.75 and scheme.density_gradient: step).
+# With --dx3d, the 3D dam break (SPHERIC Test 2, cases/spheric_test2_3d.yaml, 2 s) at each
+# spacing, once per scheme ("defaults", and "fast": CFL 0.75 with the gradient once per step):
+# H2 and H4 RMS errors against the experiment, particle-steps/s and pair interactions/s.
+# Writes perf/results/time-to-solution-<date>.json and .png.
+# usage: perf/time_to_solution.sh [--widths "25 50 100"] [--runs 3] [--dx3d "0.06 0.045"] [--out perf/results]
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
-widths="25 50"; runs=3; out="$here/perf/results"
+widths="25 50 100"; runs=3; dx3d=""; out="$here/perf/results"
 while [ $# -gt 0 ]; do
   case $1 in
     --widths) widths=$2; shift 2 ;;
     --runs) runs=$2; shift 2 ;;
+    --dx3d) dx3d=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     *) echo "perf/time_to_solution.sh: unknown option $1 (see the header of the script)" >&2; exit 2 ;;
   esac
@@ -32,7 +38,9 @@ if [ -f "$here/../shared/perf/pairbench.cpp" ]; then
   g++ -O3 -march=native -fopenmp "$here/../shared/perf/pairbench.cpp" -o "$work/pb"
   for r in 1 2 3; do "$work/pb" 300 20 >> "$work/pairbench"; done
 fi
-declare -A sets=([rk4]="" [rk4_cfl0.75]="--set scheme.cfl.acoustic=0.75")
+declare -A sets=([defaults]="--set scheme.cfl.acoustic=0.375 --set scheme.density_gradient=stage"
+                 [cfl0.75]="--set scheme.cfl.acoustic=0.75 --set scheme.density_gradient=stage"
+                 [case]="")
 : > "$work/runs"
 for w in $widths; do
   dx=$("$py" -c "print(0.05715 / $w)")
@@ -43,7 +51,9 @@ for w in $widths; do
       t1=$(date +%s.%N)
       echo "{\"code\": \"peer\", \"scheme\": \"DualSPHysics 5.4 CPU\", \"width\": $w, \"run\": $r, \"wall_seconds\": $("$py" -c "print($t1 - $t0)")}" >> "$work/runs"
     fi
-    for s in rk4 rk4_cfl0.75; do
+    schemes="defaults cfl0.75 case"
+    [ "$w" -ge 100 ] && schemes="defaults case"
+    for s in $schemes; do
       # shellcheck disable=SC2086
       "$ondine" run "$here/cases/dam_break_2d.yaml" --out "$work/$s" --quiet --set discretisation.dx="$dx" ${sets[$s]} > /dev/null 2>&1
       "$py" - "$work/$s" "$s" "$w" "$r" "$here/cases/reference/martin_moyce1952_front_n2_2.csv" >> "$work/runs" <<'PY'
@@ -64,12 +74,36 @@ s = json.load(open(d + "/summary.json"))
 # x 4 evaluations per RK4 step x steps over the loop's time (the density-gradient and wall
 # passes read the same pairs again and are not counted)
 pairs = s["particles"] * s.get("mean_neighbours", 0.0) * 4 * s["total_steps"] / s["loop_seconds"]
+gradient_passes = 1 if scheme == "case" else 4
 print(json.dumps({"code": "ondine", "scheme": scheme, "width": int(w), "run": int(r), "wall_seconds": s["wall_seconds"],
                   "loop_seconds": s["loop_seconds"], "steps": s["total_steps"], "particles": s["particles"],
                   "mean_neighbours": s.get("mean_neighbours", 0.0), "flux_pairs_per_second": pairs,
+                  "neighbour_pair_passes_per_step": 4 + gradient_passes,
+                  "particle_steps_per_second": s["particles"] * s["total_steps"] / s["loop_seconds"],
                   "front_rms_error": rms, "points": len(pts)}))
 PY
     done
+  done
+done
+declare -A sets3=([defaults]="" [fast]="--set scheme.cfl.acoustic=0.75 --set scheme.density_gradient=step")
+for d3 in $dx3d; do
+  for s in defaults fast; do
+    # shellcheck disable=SC2086
+    "$ondine" run "$here/cases/spheric_test2_3d.yaml" --out "$work/3d_$s" --quiet --set discretisation.dx="$d3" ${sets3[$s]} > /dev/null 2>&1
+    "$py" - "$work/3d_$s" "$s" "$d3" >> "$work/runs" <<'PY'
+import json, sys
+d, scheme, dx = sys.argv[1:4]
+s = json.load(open(d + "/summary.json"))
+e = s.get("errors", {})
+evals = 4 * s["total_steps"]
+print(json.dumps({"code": "ondine", "case": "spheric_test2_3d", "scheme": scheme, "dx": float(dx), "run": 1,
+                  "wall_seconds": s["wall_seconds"], "loop_seconds": s["loop_seconds"], "steps": s["total_steps"],
+                  "particles": s["particles"], "mean_neighbours": s.get("mean_neighbours", 0.0),
+                  "particle_steps_per_second": s["particles"] * s["total_steps"] / s["loop_seconds"],
+                  "flux_pairs_per_second": s["particles"] * s.get("mean_neighbours", 0.0) * evals / s["loop_seconds"],
+                  "neighbour_pair_passes_per_step": 5 if scheme == "fast" else 8,
+                  "H2_rms_error": e.get("H2_rms_error"), "H4_rms_error": e.get("H4_rms_error")}))
+PY
   done
 done
 "$py" - "$work/runs" "$work/pairbench" "$out/time-to-solution-$stamp" <<'PY'
@@ -77,6 +111,8 @@ import json, statistics, sys
 runs = [json.loads(l) for l in open(sys.argv[1]) if l.strip()]
 yard = [json.loads(l)["pair_interactions_per_s"] for l in open(sys.argv[2]) if l.strip().startswith("{")]
 stem = sys.argv[3]
+runs3 = [r for r in runs if r.get("case") == "spheric_test2_3d"]
+runs = [r for r in runs if "case" not in r]
 groups = {}
 for r in runs:
     groups.setdefault((r["width"], r["code"], r["scheme"]), []).append(r)
@@ -94,15 +130,19 @@ for row in table:
     peer = [p for p in table if p["width"] == row["width"] and p["code"] == "peer"]
     if peer and row["code"] == "ondine":
         row["time_over_peer"] = row["wall_seconds_median"] / peer[0]["wall_seconds_median"]
-json.dump({"yardstick_pairs_per_second_median": statistics.median(yard) if yard else None, "summary": table, "runs": runs},
-          open(stem + ".json", "w"), indent=1)
-for row in table:
+for r in runs3:
+    if yard:
+        r["flux_pair_rate_over_yardstick"] = r["flux_pairs_per_second"] / statistics.median(yard)
+json.dump({"yardstick_pairs_per_second_median": statistics.median(yard) if yard else None, "summary": table, "runs": runs,
+           "spheric_test2_3d": runs3}, open(stem + ".json", "w"), indent=1)
+for row in table + runs3:
     print(json.dumps(row))
 try:
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(5.5, 4))
+    fig, axes = plt.subplots(1, 2 if runs3 else 1, figsize=(11 if runs3 else 5.5, 4), squeeze=False)
+    ax = axes[0][0]
     for scheme in sorted({r["scheme"] for r in table if r["code"] == "ondine"}):
         pts = sorted((r["wall_seconds_median"], r["front_rms_error"]) for r in table if r["scheme"] == scheme)
         ax.loglog(*zip(*pts), "o-", label="Ondine " + scheme)
@@ -116,6 +156,18 @@ try:
     ax.set_title("2D dam break: error against time" + (" (pairbench %.3g pairs/s)" % statistics.median(yard) if yard else ""), fontsize=9)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7)
+    if runs3:
+        ax = axes[0][1]
+        for scheme in sorted({r["scheme"] for r in runs3}):
+            for h, mk in (("H2", "o-"), ("H4", "^:")):
+                pts = sorted((r["wall_seconds"], r[h + "_rms_error"]) for r in runs3 if r["scheme"] == scheme and r[h + "_rms_error"])
+                if pts:
+                    ax.loglog(*zip(*pts), mk, label="%s %s" % (scheme, h))
+        ax.set_xlabel("wall time (s), one run, 2 threads")
+        ax.set_ylabel("RMS error / initial height")
+        ax.set_title("SPHERIC Test 2 (3D dam break), dx = " + ", ".join(sorted({"%g" % r["dx"] for r in runs3})), fontsize=9)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(stem + ".png", dpi=90)
 except ImportError:

@@ -105,7 +105,7 @@ void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
   if (const YAML::Node sc = root["scheme"]) {
     r.only_keys(sc, "scheme", {"viscous_term", "delta_sph", "artificial_viscosity", "background_pressure",
                                "time_integrator", "cfl", "shifting", "consistent_laplacian",
-                               "wall_velocity_reconstruction", "renormalised_continuity"});
+                               "wall_velocity_reconstruction", "renormalised_continuity", "density_gradient"});
     if (sc["renormalised_continuity"])
       s.renormalised_continuity = r.boolean(sc["renormalised_continuity"], "scheme.renormalised_continuity");
     if (sc["wall_velocity_reconstruction"])
@@ -131,6 +131,13 @@ void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
     if (sc["time_integrator"])
       s.integrator = r.word(sc["time_integrator"], "scheme.time_integrator", {"rk4", "predictor_corrector"}) == "rk4"
                          ? TimeIntegrator::RK4 : TimeIntegrator::PredictorCorrector;
+    if (sc["density_gradient"]) {
+      s.density_gradient_once_per_step = r.word(sc["density_gradient"], "scheme.density_gradient", {"stage", "step"}) == "step";
+      // the consistent Laplacian's weights come out of the same pass and follow the particles next to no-slip walls
+      if (s.density_gradient_once_per_step && uses_consistent_laplacian(s))
+        r.fail(sc["density_gradient"], "scheme.density_gradient",
+               "step is not supported with the consistent Laplacian (scheme.viscous_term morris with no-slip walls), whose weights the gradient pass solves at every stage; use stage, or scheme.consistent_laplacian: false");
+    }
     if (const YAML::Node c = sc["cfl"]) {
       r.only_keys(c, "scheme.cfl", {"acoustic", "viscous", "force"});
       if (c["acoustic"]) s.cfl_acoustic = r.positive(c["acoustic"], "scheme.cfl.acoustic", "");

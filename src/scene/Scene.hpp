@@ -149,6 +149,10 @@ struct Scene {
   bool renormalised_continuity = false;  // drho/dt from the renormalised divergence (2.42-2.44, 4.86; kernels/RenormalisedContinuity.hpp)
   bool wall_velocity_reconstruction = false;  // MUSCL state of u at NFM wall points (4.30; kernels/WallVelocityState.hpp)
   TimeIntegrator integrator = TimeIntegrator::RK4;
+  // the renormalised density gradient (2.42-2.44) read by delta-SPH and the MUSCL wall state:
+  // false = computed at every stage of a step, true = at its first stage and held through the
+  // others (one gradient pass per step instead of four with RK4)
+  bool density_gradient_once_per_step = false;
   double cfl_acoustic = 0.375;  // (2.102)
   double cfl_viscous = 0.12;    // (2.103)
   double cfl_force = 0.25;      // [V&I 11]

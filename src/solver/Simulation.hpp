@@ -146,7 +146,9 @@ class Simulation {
   double front_position() const;
 
   // Derivatives (du/dt, drho/dt, pressure) at the current state; public for tests.
-  void evaluate();
+  // later_stage: a stage after the first of a time step, where scheme.density_gradient: step
+  // keeps the density gradient of the step's first stage.
+  void evaluate(bool later_stage = false);
 
   // NFM walls
   bool has_walls() const { return !walls_.empty(); }

@@ -118,7 +118,7 @@ PassContext<D> Simulation<D>::pass_context(const LevelSpan<D>& L) const {
 }
 
 template <int D>
-void Simulation<D>::evaluate() {
+void Simulation<D>::evaluate(const bool later_stage) {
   ensure_neighbours();                 // with zones: lists only; roles change at a step start
   domain_.refresh_state_halos(p_);     // several ranks: this stage's halos (with zones: the guards' sources)
   const int n = n_own_, n_all = static_cast<int>(p_.size());
@@ -137,13 +137,16 @@ void Simulation<D>::evaluate() {
   // walls its pass also solves the consistent Laplacian's weights
   const bool gradient = scene_.delta_sph > 0 || walls;
   if (gradient) a.grad_rho = p_.get(field::DensityGradient{});
+  // scheme.density_gradient: step holds the first stage's gradient through the step (the owned
+  // particles carry it through a migration; the halos are refreshed below all the same)
+  const bool gradient_pass = gradient && !(later_stage && scene_.density_gradient_once_per_step);
   const std::vector<LevelSpan<D>> levels = this->levels();
   for (const LevelSpan<D>& L : levels) {
     if (L.active_end == L.first) continue;
     const auto range = Kokkos::RangePolicy<ExecSpace>(L.first, L.active_end);
     if (walls)
       Kokkos::parallel_for("ondine::NFM::shepard_gamma", range, ShepardGammaPass<D>{walls_.facets(), walls_.facet_cells(), L.R, domain_.box(), a.x, gamma});
-    if (gradient) scheme_.density_gradient(pass_context(L));
+    if (gradient_pass) scheme_.density_gradient(pass_context(L));
   }
   // with zones the guards' density gradient came with their interpolation (GuardInterpolation.hpp)
   if (gradient) domain_.refresh(p_, field::DensityGradient{});

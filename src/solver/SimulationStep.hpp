@@ -108,12 +108,12 @@ double Simulation<D>::step(double t_stop) {
     // classical RK4: y1 = y0 + dt/6 (k1 + 2 k2 + 2 k3 + k4)
     stage_update(0.5 * dt, 1.0 / 6.0, true);
     stage_time_ = t_ + 0.5 * dt;
-    evaluate();
+    evaluate(true);
     stage_update(0.5 * dt, 2.0 / 6.0, false);
-    evaluate();
+    evaluate(true);
     stage_update(dt, 2.0 / 6.0, false);
     stage_time_ = t_ + dt;
-    evaluate();
+    evaluate(true);
     // final: y = y0 + dt (acc + k4/6)
     RungeKutta4Final<D>{domain_.local_box(), stage_views(), dt}.run(n_own_);
     domain_.halos_stale();
@@ -121,7 +121,7 @@ double Simulation<D>::step(double t_stop) {
     // explicit midpoint: y_1/2 = y0 + dt/2 k1, y1 = y0 + dt k(y_1/2)
     stage_update(0.5 * dt, 0.0, true);
     stage_time_ = t_ + 0.5 * dt;
-    evaluate();
+    evaluate(true);
     stage_update(dt, 0.0, false);
   }
   if (scene_.shifting) shift_particles();
