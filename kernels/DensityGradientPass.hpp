@@ -3,6 +3,8 @@
 // and by the MUSCL wall state (4.30):
 //   M_i = sum_j w_j (x_j - x_i) (x) grad_i W_ij,  <grad rho>_i = M_i^{-T} sum_j w_j (rho_j - rho_i) grad_i W_ij.
 // Where M_i is singular (an isolated particle) the gradient is left unrenormalised.
+// With Velocity (Riemann-SPH's MUSCL reconstruction, 2.78), the same loop also gathers the
+// renormalised velocity gradient <grad u>_i = G_i M_i^{-1} (kernels/VelocityGradientSum.hpp).
 // Exact for linear fields whatever the support (a wall or a free surface cuts it),
 // which is why no wall integral is needed here.
 //
@@ -12,6 +14,7 @@
 // solve it per particle into a scratch array of the evaluation (not a particle field).
 #include "kernels/ConsistentLaplacian.hpp"
 #include "kernels/NeighbourLoops.hpp"
+#include "kernels/VelocityGradientSum.hpp"
 #include "kernels/WallPressure.hpp"
 #include "kernels/WallSet.hpp"
 
@@ -28,7 +31,7 @@ struct LaplacianWeights {
   LaplacianWeightView<D> weights;  // (A_i, b_i) per particle
 };
 
-template <int D, class Kernel, bool ConsistentLaplacian = false>
+template <int D, class Kernel, bool ConsistentLaplacian = false, bool Velocity = false>
 struct DensityGradientPass {
   NeighbourList<D> list;
   PeriodicBox<D> box;
@@ -39,6 +42,8 @@ struct DensityGradientPass {
   field_view_t<field::Mass, D> m;
   field_view_t<field::DensityGradient, D> grad_rho;
   LaplacianWeights<D> lap = {};  // ConsistentLaplacian only
+  field_view_t<field::Velocity, D> u;  // Velocity only
+  VelocityGradientRows<D> grad_u;      // Velocity only
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<D> xi = load<D>(x, i);
@@ -49,6 +54,9 @@ struct DensityGradientPass {
     constexpr int K = Basis::K;
     double moments[K][K];  // sum c psi psi^T / r^2 (kernels/ConsistentLaplacian.hpp)
     double shepard = 0.0;
+    Mat<D> G = Mat<D>::zero();  // Velocity: sum_j w_j (u_j - u_i) (x) grad_i W_ij
+    Vec<D> ui;
+    if constexpr (Velocity) ui = load<D>(u, i);
     if constexpr (ConsistentLaplacian) {
       for (int p = 0; p < K; ++p)
         for (int q = 0; q < K; ++q) moments[p][q] = 0.0;
@@ -62,6 +70,11 @@ struct DensityGradientPass {
       for (int a = 0; a < D; ++a)
         for (int b = 0; b < D; ++b) M.a[a][b] -= w * xij[a] * gradW[b];  // (x_j - x_i) = -x_ij
       g += (w * (rho_j - rho_i)) * gradW;
+      if constexpr (Velocity) {
+        const Vec<D> du = load<D>(u, j) - ui;
+        for (int a = 0; a < D; ++a)
+          for (int b = 0; b < D; ++b) G.a[a][b] += w * du[a] * gradW[b];
+      }
       if constexpr (ConsistentLaplacian) {
         Basis::accumulate(moments, w * (rho_i + rho_j) / rho_i * dWdr / r / (r * r), xij);
         shepard += w * W.value(r);
@@ -75,8 +88,16 @@ struct DensityGradientPass {
         for (int b = 0; b < D; ++b) r[a] += B.a[b][a] * g[b];  // B^T g
       }
       g = r;
+      if constexpr (Velocity) {
+        Mat<D> GB = Mat<D>::zero();  // G B: row a is the gradient of u_a
+        for (int a = 0; a < D; ++a)
+          for (int b = 0; b < D; ++b)
+            for (int c = 0; c < D; ++c) GB.a[a][b] += G.a[a][c] * B.a[c][b];
+        G = GB;
+      }
     }
     store<D>(grad_rho, i, g);
+    if constexpr (Velocity) grad_u.store(i, G);
     if constexpr (ConsistentLaplacian) {
       // the no-slip wall points (4.85): k_q = 2 s_q W / d_n, the wall velocity as f_q
       int first = -1;

@@ -30,6 +30,11 @@ ONDINE_FIELD(Acceleration, "acceleration", double, true);  // du/dt
 ONDINE_FIELD(DensityRate, "density_rate", double, false);  // drho/dt
 // Renormalised density gradient, thesis (2.42)-(2.44), read by the delta-SPH term (2.63).
 ONDINE_FIELD(DensityGradient, "density_gradient", double, true);
+// Rows of the renormalised velocity gradient <grad u_k>_i (2.42-2.44), one vector field per
+// component k, read by the MUSCL reconstruction of Riemann-SPH (2.78); recomputed at every stage.
+ONDINE_FIELD_(VelocityGradientX, "velocity_gradient_x", double, true, false);
+ONDINE_FIELD_(VelocityGradientY, "velocity_gradient_y", double, true, false);
+ONDINE_FIELD_(VelocityGradientZ, "velocity_gradient_z", double, true, false);
 // Shepard factor gamma_i of the NFM walls (thesis 4.17, 4.52): 1 away from walls.
 ONDINE_FIELD(ShepardGamma, "shepard_gamma", double, false);
 // Free-surface flag from the NFM renormalisation matrix and normal (4.86)-(4.87): 1 on the surface.

@@ -3,6 +3,8 @@
 // takes what it needs (see src/solver/FluxDispatch.hpp).
 #include "kernels/ConsistentLaplacian.hpp"
 #include "kernels/NeighbourList.hpp"
+#include "kernels/VelocityGradientSum.hpp"
+#include "kernels/WallPressure.hpp"
 
 namespace ondine {
 
@@ -27,6 +29,8 @@ struct FluxArgs {
   double delta_coeff = 0;    // delta c0 R
   double av_alpha_R_c0 = 0;  // artificial viscosity
   double P_min = 0;          // background pressure
+  WallEos eos{1, 1, 1};      // Riemann-SPH: c(rho) (1.9)
+  VelocityGradientRows<D> grad_u;  // Riemann-SPH with MUSCL (with grad_rho)
 };
 
 template <int D>

@@ -5,10 +5,28 @@
 // Read by the velocity's MUSCL state at NFM wall points (kernels/WallVelocityState.hpp)
 // and by particle shifting's Taylor correction (kernels/ShiftingPass.hpp), which also
 // needs M_i^{-1} for its density gradient and so inverts M itself.
+#include "kernels/Fields.hpp"
 #include "kernels/Math.hpp"
 #include "kernels/Vec.hpp"
 
 namespace ondine {
+
+// <grad u>_i stored as particle fields, one row (the gradient of u_k) per field: written by
+// DensityGradientPass for Riemann-SPH's MUSCL reconstruction (kernels/terms/RiemannLeduc.hpp).
+template <int D>
+struct VelocityGradientRows {
+  field_view_t<field::VelocityGradientX, D> g0;
+  field_view_t<field::VelocityGradientY, D> g1;
+  field_view_t<field::VelocityGradientZ, D> g2;  // 3D only
+  KOKKOS_INLINE_FUNCTION double operator()(int i, int k, int b) const { return k == 0 ? g0(i, b) : k == 1 ? g1(i, b) : g2(i, b); }
+  KOKKOS_INLINE_FUNCTION void store(int i, const Mat<D>& g) const {
+    for (int b = 0; b < D; ++b) {
+      g0(i, b) = g.a[0][b];
+      g1(i, b) = g.a[1][b];
+      if constexpr (D == 3) g2(i, b) = g.a[2][b];
+    }
+  }
+};
 
 template <int D>
 struct VelocityGradientSum {

@@ -7,20 +7,24 @@
 # runs (peer, then each scheme, RUNS times) and quoting the ratio of the medians.
 # Schemes (all RK4): "defaults" (the solver's defaults: acoustic CFL 0.375, the density gradient
 # at every stage), "cfl0.75" (twice the acoustic step; skipped at widths of 100 and more) and
-# "case" (the case file as shipped: CFL 0.75 and scheme.density_gradient: step).
+# "case" (the case file as shipped: CFL 0.75 and scheme.density_gradient: step) and "riemann"
+# (Riemann-SPH of Leduc et al. with MUSCL, scheme.flux: riemann, at acoustic CFL 0.5 with the
+# gradients at every stage; the case's artificial viscosity kept). --schemes picks a subset.
 # With --dx3d, the 3D dam break (SPHERIC Test 2, cases/spheric_test2_3d.yaml, 2 s) at each
 # spacing, once per scheme ("defaults", and "fast": CFL 0.75 with the gradient once per step):
 # H2 and H4 RMS errors against the experiment, particle-steps/s and pair interactions/s.
 # Writes perf/results/time-to-solution-<date>.json and .png.
-# usage: perf/time_to_solution.sh [--widths "25 50 100"] [--runs 3] [--dx3d "0.06 0.045"] [--out perf/results]
+# usage: perf/time_to_solution.sh [--widths "25 50 100"] [--runs 3] [--schemes "defaults cfl0.75 case riemann"]
+#                                 [--dx3d "0.06 0.045"] [--out perf/results]
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
-widths="25 50 100"; runs=3; dx3d=""; out="$here/perf/results"
+widths="25 50 100"; runs=3; dx3d=""; out="$here/perf/results"; schemes_asked="defaults cfl0.75 case riemann"
 while [ $# -gt 0 ]; do
   case $1 in
     --widths) widths=$2; shift 2 ;;
     --runs) runs=$2; shift 2 ;;
     --dx3d) dx3d=$2; shift 2 ;;
+    --schemes) schemes_asked=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     *) echo "perf/time_to_solution.sh: unknown option $1 (see the header of the script)" >&2; exit 2 ;;
   esac
@@ -40,7 +44,11 @@ if [ -f "$here/../shared/perf/pairbench.cpp" ]; then
 fi
 declare -A sets=([defaults]="--set scheme.cfl.acoustic=0.375 --set scheme.density_gradient=stage"
                  [cfl0.75]="--set scheme.cfl.acoustic=0.75 --set scheme.density_gradient=stage"
-                 [case]="")
+                 [case]=""
+                 [riemann]="--set scheme.flux=riemann --set scheme.delta_sph=0 --set scheme.density_gradient=stage --set scheme.cfl.acoustic=0.5")
+for s in $schemes_asked; do
+  [ -n "${sets[$s]+x}" ] || { echo "perf/time_to_solution.sh: unknown scheme '$s' in --schemes (expected some of: ${!sets[*]})" >&2; exit 2; }
+done
 : > "$work/runs"
 for w in $widths; do
   dx=$("$py" -c "print(0.05715 / $w)")
@@ -51,8 +59,8 @@ for w in $widths; do
       t1=$(date +%s.%N)
       echo "{\"code\": \"peer\", \"scheme\": \"DualSPHysics 5.4 CPU\", \"width\": $w, \"run\": $r, \"wall_seconds\": $("$py" -c "print($t1 - $t0)")}" >> "$work/runs"
     fi
-    schemes="defaults cfl0.75 case"
-    [ "$w" -ge 100 ] && schemes="defaults case"
+    schemes=$schemes_asked
+    [ "$w" -ge 100 ] && schemes=${schemes/cfl0.75/}
     for s in $schemes; do
       # shellcheck disable=SC2086
       "$ondine" run "$here/cases/dam_break_2d.yaml" --out "$work/$s" --quiet --set discretisation.dx="$dx" ${sets[$s]} > /dev/null 2>&1
@@ -74,7 +82,7 @@ s = json.load(open(d + "/summary.json"))
 # x 4 evaluations per RK4 step x steps over the loop's time (the density-gradient and wall
 # passes read the same pairs again and are not counted)
 pairs = s["particles"] * s.get("mean_neighbours", 0.0) * 4 * s["total_steps"] / s["loop_seconds"]
-gradient_passes = 1 if scheme == "case" else 4
+gradient_passes = 1 if scheme == "case" else 4  # (with riemann the pass also gathers grad u)
 print(json.dumps({"code": "ondine", "scheme": scheme, "width": int(w), "run": int(r), "wall_seconds": s["wall_seconds"],
                   "loop_seconds": s["loop_seconds"], "steps": s["total_steps"], "particles": s["particles"],
                   "mean_neighbours": s.get("mean_neighbours", 0.0), "flux_pairs_per_second": pairs,

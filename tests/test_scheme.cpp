@@ -56,10 +56,13 @@ TEST_CASE("Linear momentum is conserved to round-off in a periodic box (2D)", "[
   check_conservation<2>("{viscous_term: morris, delta_sph: 0.1, artificial_viscosity: 0.05}");
   check_conservation<2>("{viscous_term: monaghan_gingold, background_pressure: true}");
   check_conservation<2>("{viscous_term: morris, time_integrator: predictor_corrector}");
+  check_conservation<2>("{flux: riemann, viscous_term: morris}");
+  check_conservation<2>("{flux: riemann, riemann: {reconstruction: none}, viscous_term: monaghan_gingold, artificial_viscosity: 0.05}");
 }
 
 TEST_CASE("Linear momentum is conserved to round-off in a periodic box (3D)", "[scheme][conservation]") {
   check_conservation<3>("{viscous_term: monaghan_gingold, delta_sph: 0.1, artificial_viscosity: 0.05}");
+  check_conservation<3>("{flux: riemann, viscous_term: monaghan_gingold}");
 }
 
 TEST_CASE("The renormalised density gradient is exact for a linear field", "[unit][scheme]") {

@@ -13,6 +13,9 @@ struct ValidateOptions {
   std::string level = "quick";     // quick | full
   std::string out_dir = "out/validation";
   std::string source_dir;          // where cases/ and scripts/ are
+  // the fluid flux of every run: "case" (as the case files and entries say) or "riemann"
+  // (Riemann-SPH with MUSCL: scheme_sets() below)
+  std::string scheme = "case";
 };
 
 // Returns the process exit code: 0 when every run passed its thresholds.

@@ -19,7 +19,8 @@ class ParticleSet {
  public:
   using Fields = std::tuple<field::Position, field::Velocity, field::Density, field::Pressure,
                             field::Mass, field::GlobalId, field::Acceleration, field::DensityRate,
-                            field::DensityGradient, field::ShepardGamma, field::FreeSurface,
+                            field::DensityGradient, field::VelocityGradientX, field::VelocityGradientY,
+                            field::VelocityGradientZ, field::ShepardGamma, field::FreeSurface,
                             field::AprLevel, field::AprBirthLevel, field::AprGuard, field::AprMother, field::AprParent,
                             field::StagePosition, field::StageVelocity, field::StageDensity,
                             field::StagePositionSum, field::StageVelocitySum, field::StageDensitySum>;

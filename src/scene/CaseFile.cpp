@@ -80,6 +80,7 @@ std::string to_string(KernelType k) {
   return "?";
 }
 std::string to_string(EosLaw e) { return e == EosLaw::Tait ? "tait" : "linear"; }
+std::string to_string(FluxScheme f) { return f == FluxScheme::Riemann ? "riemann" : "delta_sph"; }
 std::string to_string(ViscousTerm v) {
   return v == ViscousTerm::Morris ? "morris" : v == ViscousTerm::MonaghanGingold ? "monaghan_gingold" : "none";
 }

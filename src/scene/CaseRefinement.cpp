@@ -117,6 +117,8 @@ void read_refinement(const Reader& r, YAML::Node& root, Scene& s) {
     if (s.shifting) r.fail(ref, "refinement", "particle shifting with refinement zones is not supported");
     if (s.density_gradient_once_per_step)
       r.fail(ref, "refinement", "scheme.density_gradient: step with refinement zones is not supported (the guards' gradients are interpolated at every stage); use stage");
+    if (s.flux == FluxScheme::Riemann)
+      r.fail(ref, "refinement", "scheme.flux: riemann with refinement zones is not supported yet (the guards' velocity gradients of the MUSCL reconstruction are not interpolated); use delta_sph");
     if (s.renormalised_continuity)
       r.fail(ref, "refinement", "scheme.renormalised_continuity with refinement zones is not supported (the per-level flux does not run it)");
     read_zones(r, r.required(ref, "refinement", "zones"), "refinement.zones", 1, -1, s);

@@ -100,12 +100,37 @@ void read_forces(const Reader& r, YAML::Node& root, Scene& s) {
   }
 }
 
+// scheme.flux and scheme.riemann, and the combinations Riemann-SPH does not support
+static void read_flux(const Reader& r, const YAML::Node& sc, Scene& s) {
+  if (sc["flux"]) s.flux = r.word(sc["flux"], "scheme.flux", {"delta_sph", "riemann"}) == "riemann" ? FluxScheme::Riemann : FluxScheme::DeltaSph;
+  if (const YAML::Node rs = sc["riemann"]) {
+    if (s.flux != FluxScheme::Riemann) r.fail(rs, "scheme.riemann", "is read with scheme.flux: riemann only");
+    r.only_keys(rs, "scheme.riemann", {"variant", "reconstruction", "limiter"});
+    if (rs["variant"])
+      r.word(rs["variant"], "scheme.riemann.variant", {"leduc"});  // Vila's mass fluxes (2.74)-(2.77) need the ALE masses
+    if (rs["reconstruction"])
+      s.riemann_muscl = r.word(rs["reconstruction"], "scheme.riemann.reconstruction", {"muscl", "none"}) == "muscl";
+    if (rs["limiter"]) r.word(rs["limiter"], "scheme.riemann.limiter", {"minmod"});
+  }
+  if (s.flux != FluxScheme::Riemann) return;
+  if (s.delta_sph > 0)
+    r.fail(sc["delta_sph"], "scheme.delta_sph",
+           "is the density diffusion of the delta_sph flux; with scheme.flux: riemann the Riemann solver (2.100) dissipates: remove it or set 0");
+  if (s.renormalised_continuity)
+    r.fail(sc["renormalised_continuity"], "scheme.renormalised_continuity",
+           "replaces the centred continuity; with scheme.flux: riemann the density rate comes from the Riemann velocity (2.92): remove it");
+  if (s.riemann_muscl && s.density_gradient_once_per_step)
+    r.fail(sc["density_gradient"], "scheme.density_gradient",
+           "step is not supported with scheme.flux: riemann and MUSCL, whose reconstruction (2.78) reads the gradients of every stage; use stage");
+}
+
 void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
   const int D = s.dimension;
   if (const YAML::Node sc = root["scheme"]) {
     r.only_keys(sc, "scheme", {"viscous_term", "delta_sph", "artificial_viscosity", "background_pressure",
                                "time_integrator", "cfl", "shifting", "consistent_laplacian",
-                               "wall_velocity_reconstruction", "renormalised_continuity", "density_gradient"});
+                               "wall_velocity_reconstruction", "renormalised_continuity", "density_gradient", "flux",
+                               "riemann"});
     if (sc["renormalised_continuity"])
       s.renormalised_continuity = r.boolean(sc["renormalised_continuity"], "scheme.renormalised_continuity");
     if (sc["wall_velocity_reconstruction"])
@@ -138,6 +163,7 @@ void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
         r.fail(sc["density_gradient"], "scheme.density_gradient",
                "step is not supported with the consistent Laplacian (scheme.viscous_term morris with no-slip walls), whose weights the gradient pass solves at every stage; use stage, or scheme.consistent_laplacian: false");
     }
+    read_flux(r, sc, s);
     if (const YAML::Node c = sc["cfl"]) {
       r.only_keys(c, "scheme.cfl", {"acoustic", "viscous", "force"});
       if (c["acoustic"]) s.cfl_acoustic = r.positive(c["acoustic"], "scheme.cfl.acoustic", "");

@@ -14,6 +14,9 @@ using Vec3 = std::array<double, 3>;
 
 enum class KernelType { WendlandC2, QuarticSpline, CubicSpline };
 enum class EosLaw { Tait, Linear };
+// The fluid flux: the centred scheme with delta-SPH (2.60) and artificial viscosity (2.58), or
+// Riemann-SPH of Leduc et al. (2.90)-(2.101) with the acoustic solver (2.100)
+enum class FluxScheme { DeltaSph, Riemann };
 enum class ViscousTerm { None, Morris, MonaghanGingold };
 enum class TimeIntegrator { RK4, PredictorCorrector };
 
@@ -140,6 +143,8 @@ struct Scene {
   Vec3 body_force{0, 0, 0};  // m/s^2 (force per unit mass)
 
   // scheme
+  FluxScheme flux = FluxScheme::DeltaSph;
+  bool riemann_muscl = true;  // Riemann-SPH: MUSCL reconstruction with minmod (2.78)-(2.83); false: first order
   ViscousTerm viscous_term = ViscousTerm::None;
   double delta_sph = 0.0;             // 0 = no delta-SPH term (2.60)
   double artificial_viscosity = 0.0;  // alpha of (2.58); 0 = off
@@ -191,6 +196,7 @@ std::string to_string(KernelType);
 std::string to_string(EosLaw);
 std::string to_string(ViscousTerm);
 std::string to_string(TimeIntegrator);
+std::string to_string(FluxScheme);
 
 // The scene has a no-slip wall (viscous wall-bounded flows get the consistent Laplacian,
 // kernels/ConsistentLaplacian.hpp).
@@ -205,5 +211,12 @@ inline bool has_no_slip_wall(const Scene& s) {
 inline bool uses_consistent_laplacian(const Scene& s) {
   return s.viscous_term == ViscousTerm::Morris && s.consistent_laplacian && has_no_slip_wall(s);
 }
+
+// Riemann-SPH's MUSCL reconstruction (2.78) reads the renormalised velocity and density gradients.
+inline bool uses_velocity_gradient(const Scene& s) { return s.flux == FluxScheme::Riemann && s.riemann_muscl; }
+
+// The renormalised density gradient (2.42-2.44) is computed: delta-SPH (2.63), the MUSCL wall
+// state (4.30), Riemann-SPH's MUSCL reconstruction (2.78).
+inline bool uses_density_gradient(const Scene& s) { return s.delta_sph > 0 || !s.walls.empty() || uses_velocity_gradient(s); }
 
 }  // namespace ondine

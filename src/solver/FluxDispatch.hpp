@@ -16,6 +16,7 @@
 #include "kernels/terms/MonaghanGingoldViscosity.hpp"
 #include "kernels/terms/MorrisViscosity.hpp"
 #include "kernels/terms/PressureGradient.hpp"
+#include "kernels/terms/RiemannLeduc.hpp"
 #include "scene/Scene.hpp"
 
 namespace ondine {
@@ -33,6 +34,8 @@ T make_term(const FluxArgs<D>& a) {
   else if constexpr (std::is_same<T, term::MonaghanGingoldViscosity>::value) return T{a.nu};
   else if constexpr (std::is_same<T, term::ArtificialViscosity>::value) return T{a.av_alpha_R_c0, 0.01 * a.R * a.R};
   else if constexpr (std::is_same<T, term::BackgroundPressure>::value) return T{a.P_min};
+  else if constexpr (std::is_same<T, term::RiemannLeduc<D, true>>::value) return T{a.eos, a.grad_rho, a.grad_u};
+  else if constexpr (std::is_same<T, term::RiemannLeduc<D, false>>::value) return T{a.eos, {}, {}};
   else return T{};
 }
 
@@ -73,6 +76,11 @@ FluxFunction<D> with_viscous(const Scene& s, TypeList<T...>) {
 template <int D, class Kernel>
 FluxFunction<D> select_flux(const Scene& s) {
   using Base = TypeList<term::PressureGradient, term::Continuity>;
+  // Riemann-SPH replaces the centred pressure gradient and continuity (and delta-SPH)
+  if (s.flux == FluxScheme::Riemann) {
+    if (s.riemann_muscl) return detail::with_viscous<D, Kernel>(s, TypeList<term::RiemannLeduc<D, true>>{});
+    return detail::with_viscous<D, Kernel>(s, TypeList<term::RiemannLeduc<D, false>>{});
+  }
   if (s.delta_sph > 0)
     return detail::with_viscous<D, Kernel>(s, TypeList<term::PressureGradient, term::Continuity, term::DeltaSphDiffusion<D>>{});
   return detail::with_viscous<D, Kernel>(s, Base{});

@@ -196,6 +196,8 @@ nlohmann::json run_summary(const Scene& scene, const RunOptions& opt, const Simu
                  {"nu", scene.nu},
                  {"morris_lattice_factor", sim.morris_factor()},
                  {"consistent_laplacian", uses_consistent_laplacian(scene)},
+                 {"flux", to_string(scene.flux)},
+                 {"riemann_reconstruction", scene.flux == FluxScheme::Riemann ? (scene.riemann_muscl ? "muscl_minmod" : "none") : "-"},
                  {"delta_sph", scene.delta_sph},
                  {"artificial_viscosity", scene.artificial_viscosity},
                  {"background_pressure", scene.background_pressure},

@@ -27,16 +27,19 @@ auto range(const Context& c) {
 }
 
 // the density gradient; next to no-slip walls also the consistent Laplacian's weights
-template <int D, class K, bool Consistent>
+// (and with Riemann-SPH's MUSCL reconstruction the velocity gradient in the same loop)
+template <int D, class K, bool Consistent, bool Velocity>
 void density_gradient(const PassContext<D>& c) {
   const K W(c.R);
   if constexpr (Consistent)
-    Kokkos::parallel_for("ondine::DensityGradient+consistent_laplacian", range(c),
-                         DensityGradientPass<D, K, true>{c.list, c.box, W, c.R * c.R, c.x, c.rho, c.m, c.grad_rho,
-                                                         {c.wall, c.wall_cells, 0.05 * c.R, c.morris_factor, c.gamma, c.weights}});
+    Kokkos::parallel_for(Velocity ? "ondine::DensityGradient+velocity+consistent_laplacian" : "ondine::DensityGradient+consistent_laplacian",
+                         range(c),
+                         DensityGradientPass<D, K, true, Velocity>{c.list, c.box, W, c.R * c.R, c.x, c.rho, c.m, c.grad_rho,
+                                                                   {c.wall, c.wall_cells, 0.05 * c.R, c.morris_factor, c.gamma, c.weights},
+                                                                   c.u, c.grad_u});
   else
-    Kokkos::parallel_for("ondine::DensityGradient", range(c),
-                         DensityGradientPass<D, K>{c.list, c.box, W, c.R * c.R, c.x, c.rho, c.m, c.grad_rho});
+    Kokkos::parallel_for(Velocity ? "ondine::DensityGradient+velocity" : "ondine::DensityGradient", range(c),
+                         DensityGradientPass<D, K, false, Velocity>{c.list, c.box, W, c.R * c.R, c.x, c.rho, c.m, c.grad_rho, {}, c.u, c.grad_u});
 }
 
 // the continuity's renormalised divergence (kernels/RenormalisedContinuity.hpp)
@@ -153,8 +156,9 @@ CompiledScheme<D> compile(const Scene& s) {
   CompiledScheme<D> c;
   c.flux = select_flux<D, K>(s);
   if (walls) c.wall_flux = select_wall_flux<D, K>(s);
-  if (walls && uses_consistent_laplacian(s)) c.density_gradient = &density_gradient<D, K, true>;
-  else c.density_gradient = &density_gradient<D, K, false>;
+  const bool consistent = walls && uses_consistent_laplacian(s), velocity = uses_velocity_gradient(s);
+  if (consistent) c.density_gradient = velocity ? &density_gradient<D, K, true, true> : &density_gradient<D, K, true, false>;
+  else c.density_gradient = velocity ? &density_gradient<D, K, false, true> : &density_gradient<D, K, false, false>;
   c.renormalised_continuity = walls ? &renormalised_continuity<D, K, true> : &renormalised_continuity<D, K, false>;
   c.free_surface = walls ? &free_surface<D, K, true> : &free_surface<D, K, false>;
   c.wall_stiffness = &wall_stiffness<D, K>;

@@ -96,6 +96,9 @@ PassContext<D> Simulation<D>::pass_context(const LevelSpan<D>& L) const {
   take(c.P, field::Pressure{});
   take(c.m, field::Mass{});
   take(c.grad_rho, field::DensityGradient{});
+  take(c.grad_u.g0, field::VelocityGradientX{});
+  take(c.grad_u.g1, field::VelocityGradientY{});
+  take(c.grad_u.g2, field::VelocityGradientZ{});
   take(c.gamma, field::ShepardGamma{});
   take(c.drho, field::DensityRate{});
   take(c.free_surface, field::FreeSurface{});
@@ -133,10 +136,17 @@ void Simulation<D>::evaluate(const bool later_stage) {
   with_eos<D>(scene_, [&](auto eos) { update_pressure<D>(eos, a.rho, a.P, n_all); });
   if (scene_.background_pressure) a.P_min = background_pressure_min(a.P, n);
   const auto gamma = walls ? p_.get(field::ShepardGamma{}) : field_view_t<field::ShepardGamma, D>();
-  // the density gradient feeds delta-SPH and the MUSCL wall state (4.30); next to no-slip
-  // walls its pass also solves the consistent Laplacian's weights
-  const bool gradient = scene_.delta_sph > 0 || walls;
+  // the density gradient feeds delta-SPH, the MUSCL wall state (4.30) and Riemann-SPH's MUSCL
+  // (2.78, with the velocity gradient); next to no-slip walls its pass also solves the
+  // consistent Laplacian's weights
+  const bool gradient = uses_density_gradient(scene_), velocity_gradient = uses_velocity_gradient(scene_);
   if (gradient) a.grad_rho = p_.get(field::DensityGradient{});
+  if (velocity_gradient) {
+    a.grad_u.g0 = p_.get(field::VelocityGradientX{});
+    a.grad_u.g1 = p_.get(field::VelocityGradientY{});
+    if constexpr (D == 3) a.grad_u.g2 = p_.get(field::VelocityGradientZ{});
+  }
+  a.eos = wall_eos();
   // scheme.density_gradient: step holds the first stage's gradient through the step (the owned
   // particles carry it through a migration; the halos are refreshed below all the same)
   const bool gradient_pass = gradient && !(later_stage && scene_.density_gradient_once_per_step);
@@ -150,6 +160,10 @@ void Simulation<D>::evaluate(const bool later_stage) {
   }
   // with zones the guards' density gradient came with their interpolation (GuardInterpolation.hpp)
   if (gradient) domain_.refresh(p_, field::DensityGradient{});
+  if (velocity_gradient) {
+    domain_.refresh(p_, field::VelocityGradientX{}, field::VelocityGradientY{});
+    if constexpr (D == 3) domain_.refresh(p_, field::VelocityGradientZ{});
+  }
   const WallEos weos = wall_eos();
   for (const LevelSpan<D>& L : levels) {
     if (L.active_end == L.first) continue;

@@ -45,8 +45,13 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
   p_.allocate(field::Acceleration{});
   p_.allocate(field::DensityRate{});
   const bool walls = !scene.walls.empty();
-  // the density gradient feeds delta-SPH and the MUSCL wall state (4.30)
-  if (scene.delta_sph > 0 || walls) p_.allocate(field::DensityGradient{});
+  // the density gradient feeds delta-SPH, the MUSCL wall state (4.30) and Riemann-SPH's MUSCL (2.78)
+  if (uses_density_gradient(scene)) p_.allocate(field::DensityGradient{});
+  if (uses_velocity_gradient(scene)) {
+    p_.allocate(field::VelocityGradientX{});
+    p_.allocate(field::VelocityGradientY{});
+    if constexpr (D == 3) p_.allocate(field::VelocityGradientZ{});
+  }
   if (walls) p_.allocate(field::ShepardGamma{});
   bool free_surface_possible = false;
   for (int k = 0; k < D; ++k) free_surface_possible = free_surface_possible || !scene.periodic[k];

@@ -1,0 +1,97 @@
+#pragma once
+// Riemann-SPH of Leduc et al. (no mass flux; thesis 2.90-2.101, with NFM walls 4.26-4.29):
+//   drho_i/dt = -2 rho_i w_j (u_E n_ij - u_i) . grad_i W_ij       (from d(w_i)/dt of 2.92, d(w rho)/dt = 0)
+//   du_i/dt  += -(2/rho_i) w_j P_E grad_i W_ij                       (2.97)
+// with (u_E, P_E) the linearised (acoustic) Riemann solution (2.100) along n_ij = (x_j - x_i)/r
+// between the states of i and j at the pair's midpoint, reconstructed by MUSCL (2.78) from the
+// renormalised gradients of DensityGradientPass and limited pair by pair (2.81)-(2.83) (see
+// muscl_midpoint). P_E and u_E n_ij are symmetric in the pair, so momentum is conserved to
+// round-off; the masses are constant, so mass is exactly.
+#include "kernels/Fields.hpp"
+#include "kernels/Math.hpp"
+#include "kernels/PairData.hpp"
+#include "kernels/VelocityGradientSum.hpp"
+#include "kernels/WallPressure.hpp"
+
+namespace ondine {
+
+// The value of phi_i reconstructed towards the midpoint of (i, j), phi_i + grad_i . (x_mid - x_i)
+// (2.78), limited pair by pair (2.81)-(2.83): theta = grad_i . (x_mid - x_i) / (phi_j - phi_i) is
+// held within [0, 1/2], so the state lies between phi_i and the pair mean. A linear field gives
+// theta = 1/2, the exact midpoint value, from either side.
+// Reading of (2.83): printed as phi_i + minmod(1, theta)(phi_j - phi_i) with theta of the half
+// distance, which lets theta reach 1; across a jump (theta > 1/2 on both sides) the two states
+// would then cross, phi_i^ = phi_j and phi_j^ = phi_i, and the solver's dissipation change sign.
+// The bound 1/2 is the classic minmod(grad_i . x_ji, phi_j - phi_i) / 2 of MUSCL schemes; both
+// readings agree on smooth fields (docs/design.md).
+KOKKOS_INLINE_FUNCTION double muscl_midpoint(double phi_i, double phi_j, double slope_half) {
+  const double jump = phi_j - phi_i;
+  if (jump == 0.0) return phi_i;
+  const double theta = slope_half / jump;
+  return phi_i + (theta < 0.0 ? 0.0 : theta > 0.5 ? 0.5 : theta) * jump;
+}
+
+// The acoustic Riemann solver (2.100), one-dimensional along n_ij: left state i, right state j,
+// velocities projected on n_ij (pointing from i to j). Returns (u_E, P_E).
+struct AcousticRiemann {
+  double u, P;
+};
+KOKKOS_INLINE_FUNCTION AcousticRiemann acoustic_riemann(double Z_L, double U_L, double P_L, double Z_R, double U_R,
+                                                        double P_R) {
+  const double inv = 1.0 / (Z_L + Z_R);
+  return {(Z_L * U_L + Z_R * U_R + P_L - P_R) * inv, (Z_R * P_L + Z_L * P_R + Z_L * Z_R * (U_L - U_R)) * inv};
+}
+
+namespace term {
+
+// Muscl = false: first order (the particle states themselves, thesis 2.73-2.77 with constant states).
+template <int D, bool Muscl>
+struct RiemannLeduc {
+  static constexpr const char* name = Muscl ? "riemann_leduc_muscl" : "riemann_leduc";
+  WallEos eos;  // c(rho) of (1.9); P(rho^) = P_i + c_i^2 (rho^ - rho_i), exact for the linear law
+  field_view_t<field::DensityGradient, D> grad_rho;  // Muscl only
+  VelocityGradientRows<D> grad_u;                    // Muscl only
+
+  // c (1.9) without pow for the usual Tait exponent 7 and the linear law (gamma 1)
+  KOKKOS_INLINE_FUNCTION double sound_speed(double rho) const {
+    if (eos.eos_gamma == 7.0) {
+      const double x = rho / eos.rho0;
+      return eos.c0 * (x * x * x);
+    }
+    if (eos.eos_gamma == 1.0) return eos.c0;
+    return kmath::sqrt(eos.c2(rho));
+  }
+
+  KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {
+    const Vec<D> n = (-1.0 / q.r) * q.xij;  // from i to j
+    double rho_L = q.rho_i, rho_R = q.rho_j;
+    Vec<D> u_L = q.u_i, u_R = q.u_j;
+    if constexpr (Muscl) {
+      // x_mid - x_i = -x_ij / 2, x_mid - x_j = +x_ij / 2
+      double sr_i = 0.0, sr_j = 0.0;
+      for (int b = 0; b < D; ++b) {
+        sr_i -= 0.5 * grad_rho(q.i, b) * q.xij[b];
+        sr_j += 0.5 * grad_rho(q.j, b) * q.xij[b];
+      }
+      rho_L = muscl_midpoint(q.rho_i, q.rho_j, sr_i);
+      rho_R = muscl_midpoint(q.rho_j, q.rho_i, sr_j);
+      for (int k = 0; k < D; ++k) {
+        double su_i = 0.0, su_j = 0.0;
+        for (int b = 0; b < D; ++b) {
+          su_i -= 0.5 * grad_u(q.i, k, b) * q.xij[b];
+          su_j += 0.5 * grad_u(q.j, k, b) * q.xij[b];
+        }
+        u_L[k] = muscl_midpoint(q.u_i[k], q.u_j[k], su_i);
+        u_R[k] = muscl_midpoint(q.u_j[k], q.u_i[k], su_j);
+      }
+    }
+    const double c_i = sound_speed(q.rho_i), c_j = sound_speed(q.rho_j);
+    const double P_L = q.P_i + c_i * c_i * (rho_L - q.rho_i), P_R = q.P_j + c_j * c_j * (rho_R - q.rho_j);
+    const AcousticRiemann E = acoustic_riemann(rho_L * c_i, dot(u_L, n), P_L, rho_R * c_j, dot(u_R, n), P_R);
+    s.du += (-2.0 * q.omega_j * E.P * q.inv_rho_i) * q.gradW;
+    s.drho -= 2.0 * q.rho_i * q.omega_j * (E.u * dot(n, q.gradW) - dot(q.u_i, q.gradW));
+  }
+};
+
+}  // namespace term
+}  // namespace ondine

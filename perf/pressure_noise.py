@@ -1,0 +1,120 @@
+#!/usr/bin/python3
+"""Pressure noise and long-time particle regularity, per fluid flux (scheme.flux).
+
+For each scheme (delta_sph as the case files say; riemann: Riemann-SPH with MUSCL):
+  * hydrostatic_tank_2d run to T_TANK s (20 by default, the shipped 0.5 s damping kept), the
+    bottom probe sampled every 2 ms;
+  * dam_break_impact_2d (0.35 s: the surge hits the right wall at about 0.2 s), the right-wall
+    probe sampled every 0.5 ms.
+The pressure noise of a probe is the RMS of its signal minus the signal's centred moving
+average over ten acoustic periods, 10 x 4 H / c0 (the first acoustic mode of a water column of
+depth H, closed at the bottom and free at the top): what remains is the high-frequency part
+that the physics of these flows does not have. The tank's is taken after 2 s (the start-up
+wave damped), the dam break's over the whole run.
+Regularity at the tank's last state: the spread (std / mean) of each particle's nearest-
+neighbour distance, the smallest distance over dx (clumping), the density bounds; at rest the
+lattice stays regular when the spread stays small.
+Writes perf/results/pressure-noise-<date>.json and prints one line per run.
+usage: perf/pressure_noise.py [--tank-duration 20] [--schemes "delta_sph riemann"] [--out perf/results]
+"""
+import argparse, csv, glob, json, os, subprocess, sys, tempfile, time
+
+import numpy as np
+
+here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+ap.add_argument("--tank-duration", type=float, default=20.0)
+ap.add_argument("--schemes", default="delta_sph riemann")
+ap.add_argument("--out", default=os.path.join(here, "perf", "results"))
+args = ap.parse_args()
+ondine = os.environ.get("ONDINE", os.path.join(here, "build", "ondine"))
+if not os.access(ondine, os.X_OK):
+    sys.exit("perf/pressure_noise.py: build first (make build): no " + ondine)
+SCHEMES = {"delta_sph": [],
+           "riemann": ["scheme.flux=riemann", "scheme.delta_sph=0", "scheme.density_gradient=stage"]}
+for s in args.schemes.split():
+    if s not in SCHEMES:
+        sys.exit("perf/pressure_noise.py: unknown scheme '%s' (expected some of %s)" % (s, " ".join(SCHEMES)))
+
+
+def run(case, sets, out):
+    cmd = [ondine, "run", os.path.join(here, "cases", case), "--out", out, "--quiet"]
+    for s in sets:
+        cmd += ["--set", s]
+    env = dict(os.environ, OMP_NUM_THREADS=os.environ.get("OMP_NUM_THREADS", "2"))
+    t0 = time.time()
+    p = subprocess.run(cmd, env=env, capture_output=True, text=True)
+    if p.returncode != 0:
+        sys.exit("perf/pressure_noise.py: %s failed:\n%s" % (" ".join(cmd), p.stderr[-2000:]))
+    return json.load(open(os.path.join(out, "summary.json"))), time.time() - t0
+
+
+def probe(out, name):
+    rows = list(csv.DictReader(open(os.path.join(out, "probes.csv"))))
+    return np.array([float(r["time"]) for r in rows]), np.array([float(r[name + ".pressure"]) for r in rows])
+
+
+def noise(t, p, window, t_from=0.0):
+    """RMS of p minus its centred moving average over `window` seconds, for t >= t_from (and
+    at least half a window from either end, where the average is one-sided)."""
+    dt = t[1] - t[0]
+    k = max(1, int(round(window / dt)))
+    k += (k + 1) % 2  # odd, centred
+    avg = np.convolve(p, np.ones(k) / k, mode="same")
+    half = k // 2
+    keep = (t >= t_from) & (np.arange(len(t)) >= half) & (np.arange(len(t)) < len(t) - half)
+    return float(np.sqrt(np.mean((p[keep] - avg[keep]) ** 2))), int(keep.sum())
+
+
+def regularity(out, dx):
+    import h5py
+    last = sorted(glob.glob(os.path.join(out, "*_[0-9]*.h5")))[-1]
+    with h5py.File(last, "r") as f:
+        x = np.array(f["position"])
+        rho = np.array(f["density"])
+    if x.shape[0] < x.shape[1]:
+        x = x.T
+    d = np.full(len(x), np.inf)
+    for i in range(0, len(x), 512):  # brute force in blocks
+        b = x[i:i + 512]
+        r = np.sqrt(((b[:, None, :] - x[None, :, :]) ** 2).sum(-1))
+        r[np.arange(len(b)), np.arange(i, i + len(b))] = np.inf
+        d[i:i + len(b)] = r.min(1)
+    return {"nearest_distance_spread": float(d.std() / d.mean()), "nearest_distance_min_over_dx": float(d.min() / dx),
+            "nearest_distance_mean_over_dx": float(d.mean() / dx), "density_min": float(rho.min()), "density_max": float(rho.max())}
+
+
+results = []
+work = tempfile.mkdtemp()
+for scheme in args.schemes.split():
+    # the tank: H = 0.5 m, dx = 0.02 m
+    out = os.path.join(work, "tank_" + scheme)
+    s, wall = run("hydrostatic_tank_2d.yaml", SCHEMES[scheme] + ["time.duration=%g" % args.tank_duration,
+                                                                  "time.output_interval=0.002", "time.snapshot_every=1000000"], out)
+    c0, H, dx = s["scheme"]["c0"], 0.5, s["scheme"]["dx"]
+    t, p = probe(out, "bottom")
+    rms, n = noise(t, p, 10 * 4 * H / c0, 2.0)
+    late = t >= 2.0
+    r = {"case": "hydrostatic_tank_2d", "scheme": scheme, "duration": args.tank_duration, "wall_seconds": wall,
+         "steps": s["total_steps"], "probe": "bottom", "window_seconds": 10 * 4 * H / c0, "samples": n,
+         "pressure_noise_rms_pa": rms, "pressure_noise_over_rho_g_H": rms / (1000 * 9.81 * H),
+         "mean_pressure_error_over_rho_g_H": float(abs(p[late].mean() - 1000 * 9.81 * (H - 0.05)) / (1000 * 9.81 * H)),
+         "errors": s.get("errors", {})}
+    r.update(regularity(out, dx))
+    results.append(r)
+    print(json.dumps(r), flush=True)
+    # the dam break's impact on the right wall: column 2a = 0.1143 m
+    out = os.path.join(work, "impact_" + scheme)
+    s, wall = run("dam_break_impact_2d.yaml", SCHEMES[scheme] + ["time.output_interval=0.0005", "time.snapshot_every=1000000"], out)
+    c0, H = s["scheme"]["c0"], 0.1143
+    t, p = probe(out, "right_wall")
+    rms, n = noise(t, p, 10 * 4 * H / c0)
+    r = {"case": "dam_break_impact_2d", "scheme": scheme, "wall_seconds": wall, "steps": s["total_steps"], "probe": "right_wall",
+         "window_seconds": 10 * 4 * H / c0, "samples": n, "pressure_noise_rms_pa": rms,
+         "pressure_noise_over_rho_g_2a": rms / (1000 * 9.81 * H), "peak_pressure_pa": float(p.max())}
+    results.append(r)
+    print(json.dumps(r), flush=True)
+os.makedirs(args.out, exist_ok=True)
+stem = os.path.join(args.out, time.strftime("pressure-noise-%Y%m%d-%H%M%S"))
+json.dump({"runs": results, "omp_num_threads": os.environ.get("OMP_NUM_THREADS", "2")}, open(stem + ".json", "w"), indent=1)
+print("wrote", stem + ".json")
