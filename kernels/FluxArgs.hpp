@@ -30,6 +30,7 @@ struct FluxArgs {
   double av_alpha_R_c0 = 0;  // artificial viscosity
   double P_min = 0;          // background pressure
   WallEos eos{1, 1, 1};      // Riemann-SPH: c(rho) (1.9)
+  double riemann_eta = 0;    // Riemann-SPH: > 0 the low-dissipation pressure (kernels/terms/RiemannLeduc.hpp)
   VelocityGradientRows<D> grad_u;  // Riemann-SPH with MUSCL (with grad_rho)
 };
 

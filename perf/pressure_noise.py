@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Pressure noise and long-time particle regularity, per fluid flux (scheme.flux).
 
-For each scheme (delta_sph as the case files say; riemann: Riemann-SPH with MUSCL):
+For each scheme (delta_sph as the case files say; riemann: Riemann-SPH with MUSCL; each also
+with particle shifting, _shifting):
   * hydrostatic_tank_2d run to T_TANK s (20 by default, the shipped 0.5 s damping kept), the
     bottom probe sampled every 2 ms;
   * dam_break_impact_2d (0.35 s: the surge hits the right wall at about 0.2 s), the right-wall
@@ -15,7 +16,8 @@ Regularity at the tank's last state: the spread (std / mean) of each particle's 
 neighbour distance, the smallest distance over dx (clumping), the density bounds; at rest the
 lattice stays regular when the spread stays small.
 Writes perf/results/pressure-noise-<date>.json and prints one line per run.
-usage: perf/pressure_noise.py [--tank-duration 20] [--schemes "delta_sph riemann"] [--out perf/results]
+usage: perf/pressure_noise.py [--tank-duration 20] [--schemes "delta_sph delta_sph_shifting riemann riemann_shifting"]
+                              [--out perf/results]
 """
 import argparse, csv, glob, json, os, subprocess, sys, tempfile, time
 
@@ -24,14 +26,15 @@ import numpy as np
 here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
 ap.add_argument("--tank-duration", type=float, default=20.0)
-ap.add_argument("--schemes", default="delta_sph riemann")
+ap.add_argument("--schemes", default="delta_sph delta_sph_shifting riemann riemann_shifting")
 ap.add_argument("--out", default=os.path.join(here, "perf", "results"))
 args = ap.parse_args()
 ondine = os.environ.get("ONDINE", os.path.join(here, "build", "ondine"))
 if not os.access(ondine, os.X_OK):
     sys.exit("perf/pressure_noise.py: build first (make build): no " + ondine)
-SCHEMES = {"delta_sph": [],
-           "riemann": ["scheme.flux=riemann", "scheme.delta_sph=0", "scheme.density_gradient=stage"]}
+RIEMANN = ["scheme.flux=riemann", "scheme.delta_sph=0", "scheme.density_gradient=stage"]
+SCHEMES = {"delta_sph": [], "delta_sph_shifting": ["scheme.shifting=true"],
+           "riemann": RIEMANN, "riemann_shifting": RIEMANN + ["scheme.shifting=true"]}
 for s in args.schemes.split():
     if s not in SCHEMES:
         sys.exit("perf/pressure_noise.py: unknown scheme '%s' (expected some of %s)" % (s, " ".join(SCHEMES)))

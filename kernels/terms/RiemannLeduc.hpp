@@ -42,6 +42,20 @@ KOKKOS_INLINE_FUNCTION AcousticRiemann acoustic_riemann(double Z_L, double U_L, 
   return {(Z_L * U_L + Z_R * U_R + P_L - P_R) * inv, (Z_R * P_L + Z_L * P_R + Z_L * Z_R * (U_L - U_R)) * inv};
 }
 
+// The low-dissipation variant of Zhang, Hu & Adams (2017, J. Comput. Phys. 335): the
+// pressure's dissipation Z_L Z_R (U_L - U_R) / (Z_L + Z_R) of (2.100) becomes
+// (1/2) rho_bar beta (U_L - U_R), beta = min(eta max(U_L - U_R, 0), c_bar): none where the pair
+// separates, proportional to the approach speed where it closes (eta = 3 in that paper). u_E
+// keeps (2.100). Not in the seed; scheme.riemann.dissipation: low.
+KOKKOS_INLINE_FUNCTION AcousticRiemann low_dissipation_riemann(double rho_L, double c_L, double U_L, double P_L, double rho_R,
+                                                               double c_R, double U_R, double P_R, double eta) {
+  const double Z_L = rho_L * c_L, Z_R = rho_R * c_R, inv = 1.0 / (Z_L + Z_R);
+  const double dU = U_L - U_R, c_bar = 0.5 * (c_L + c_R);
+  const double beta_raw = eta * (dU > 0.0 ? dU : 0.0);
+  const double beta = beta_raw < c_bar ? beta_raw : c_bar;
+  return {(Z_L * U_L + Z_R * U_R + P_L - P_R) * inv, (Z_R * P_L + Z_L * P_R) * inv + 0.25 * (rho_L + rho_R) * beta * dU};
+}
+
 namespace term {
 
 // Muscl = false: first order (the particle states themselves, thesis 2.73-2.77 with constant states).
@@ -49,6 +63,7 @@ template <int D, bool Muscl>
 struct RiemannLeduc {
   static constexpr const char* name = Muscl ? "riemann_leduc_muscl" : "riemann_leduc";
   WallEos eos;  // c(rho) of (1.9); P(rho^) = P_i + c_i^2 (rho^ - rho_i), exact for the linear law
+  double eta = 0;  // > 0: the low-dissipation pressure of Zhang et al. (low_dissipation_riemann)
   field_view_t<field::DensityGradient, D> grad_rho;  // Muscl only
   VelocityGradientRows<D> grad_u;                    // Muscl only
 
@@ -87,7 +102,8 @@ struct RiemannLeduc {
     }
     const double c_i = sound_speed(q.rho_i), c_j = sound_speed(q.rho_j);
     const double P_L = q.P_i + c_i * c_i * (rho_L - q.rho_i), P_R = q.P_j + c_j * c_j * (rho_R - q.rho_j);
-    const AcousticRiemann E = acoustic_riemann(rho_L * c_i, dot(u_L, n), P_L, rho_R * c_j, dot(u_R, n), P_R);
+    const AcousticRiemann E = eta > 0.0 ? low_dissipation_riemann(rho_L, c_i, dot(u_L, n), P_L, rho_R, c_j, dot(u_R, n), P_R, eta)
+                                        : acoustic_riemann(rho_L * c_i, dot(u_L, n), P_L, rho_R * c_j, dot(u_R, n), P_R);
     s.du += (-2.0 * q.omega_j * E.P * q.inv_rho_i) * q.gradW;
     s.drho -= 2.0 * q.rho_i * q.omega_j * (E.u * dot(n, q.gradW) - dot(q.u_i, q.gradW));
   }

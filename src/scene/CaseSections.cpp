@@ -105,7 +105,9 @@ static void read_flux(const Reader& r, const YAML::Node& sc, Scene& s) {
   if (sc["flux"]) s.flux = r.word(sc["flux"], "scheme.flux", {"delta_sph", "riemann"}) == "riemann" ? FluxScheme::Riemann : FluxScheme::DeltaSph;
   if (const YAML::Node rs = sc["riemann"]) {
     if (s.flux != FluxScheme::Riemann) r.fail(rs, "scheme.riemann", "is read with scheme.flux: riemann only");
-    r.only_keys(rs, "scheme.riemann", {"variant", "reconstruction", "limiter"});
+    r.only_keys(rs, "scheme.riemann", {"variant", "reconstruction", "limiter", "dissipation"});
+    if (rs["dissipation"])
+      s.riemann_low_dissipation = r.word(rs["dissipation"], "scheme.riemann.dissipation", {"acoustic", "low"}) == "low";
     if (rs["variant"])
       r.word(rs["variant"], "scheme.riemann.variant", {"leduc"});  // Vila's mass fluxes (2.74)-(2.77) need the ALE masses
     if (rs["reconstruction"])
@@ -125,7 +127,6 @@ static void read_flux(const Reader& r, const YAML::Node& sc, Scene& s) {
 }
 
 void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
-  const int D = s.dimension;
   if (const YAML::Node sc = root["scheme"]) {
     r.only_keys(sc, "scheme", {"viscous_term", "delta_sph", "artificial_viscosity", "background_pressure",
                                "time_integrator", "cfl", "shifting", "consistent_laplacian",
@@ -146,13 +147,9 @@ void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
     if (sc["artificial_viscosity"]) s.artificial_viscosity = r.non_negative(sc["artificial_viscosity"], "scheme.artificial_viscosity", " (alpha)");
     if (sc["consistent_laplacian"]) s.consistent_laplacian = r.boolean(sc["consistent_laplacian"], "scheme.consistent_laplacian");
     if (sc["background_pressure"]) s.background_pressure = r.boolean(sc["background_pressure"], "scheme.background_pressure");
-    if (sc["shifting"]) {
-      s.shifting = r.boolean(sc["shifting"], "scheme.shifting");
-      bool all_periodic = true;
-      for (int k = 0; k < D; ++k) all_periodic = all_periodic && s.periodic[k];
-      if (s.shifting && (!all_periodic || root["walls"]))
-        r.fail(sc["shifting"], "scheme.shifting", "particle shifting is for flows without a free surface or wall; it needs every axis periodic and no walls (the free-surface treatment of shifting is not built yet)");
-    }
+    // with a free surface the surface particles shift tangentially only; with NFM walls the
+    // concentration gradient has its wall term (kernels/ShiftingPass.hpp)
+    if (sc["shifting"]) s.shifting = r.boolean(sc["shifting"], "scheme.shifting");
     if (sc["time_integrator"])
       s.integrator = r.word(sc["time_integrator"], "scheme.time_integrator", {"rk4", "predictor_corrector"}) == "rk4"
                          ? TimeIntegrator::RK4 : TimeIntegrator::PredictorCorrector;

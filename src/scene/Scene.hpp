@@ -144,7 +144,8 @@ struct Scene {
 
   // scheme
   FluxScheme flux = FluxScheme::DeltaSph;
-  bool riemann_muscl = true;  // Riemann-SPH: MUSCL reconstruction with minmod (2.78)-(2.83); false: first order
+  bool riemann_muscl = true;
+  bool riemann_low_dissipation = true;  // Riemann-SPH: the low-dissipation pressure of Zhang et al. (2017); false: (2.100) as printed  // Riemann-SPH: MUSCL reconstruction with minmod (2.78)-(2.83); false: first order
   ViscousTerm viscous_term = ViscousTerm::None;
   double delta_sph = 0.0;             // 0 = no delta-SPH term (2.60)
   double artificial_viscosity = 0.0;  // alpha of (2.58); 0 = off

@@ -34,8 +34,8 @@ T make_term(const FluxArgs<D>& a) {
   else if constexpr (std::is_same<T, term::MonaghanGingoldViscosity>::value) return T{a.nu};
   else if constexpr (std::is_same<T, term::ArtificialViscosity>::value) return T{a.av_alpha_R_c0, 0.01 * a.R * a.R};
   else if constexpr (std::is_same<T, term::BackgroundPressure>::value) return T{a.P_min};
-  else if constexpr (std::is_same<T, term::RiemannLeduc<D, true>>::value) return T{a.eos, a.grad_rho, a.grad_u};
-  else if constexpr (std::is_same<T, term::RiemannLeduc<D, false>>::value) return T{a.eos, {}, {}};
+  else if constexpr (std::is_same<T, term::RiemannLeduc<D, true>>::value) return T{a.eos, a.riemann_eta, a.grad_rho, a.grad_u};
+  else if constexpr (std::is_same<T, term::RiemannLeduc<D, false>>::value) return T{a.eos, a.riemann_eta, {}, {}};
   else return T{};
 }
 

@@ -198,6 +198,7 @@ nlohmann::json run_summary(const Scene& scene, const RunOptions& opt, const Simu
                  {"consistent_laplacian", uses_consistent_laplacian(scene)},
                  {"flux", to_string(scene.flux)},
                  {"riemann_reconstruction", scene.flux == FluxScheme::Riemann ? (scene.riemann_muscl ? "muscl_minmod" : "none") : "-"},
+                 {"riemann_dissipation", scene.flux == FluxScheme::Riemann ? (scene.riemann_low_dissipation ? "low" : "acoustic") : "-"},
                  {"delta_sph", scene.delta_sph},
                  {"artificial_viscosity", scene.artificial_viscosity},
                  {"background_pressure", scene.background_pressure},

@@ -28,6 +28,7 @@ struct PassContext {
   CellList<D> cells;       // the particle cell list (observers that start from a point)
   CellList<D> wall_cells;  // the wall points binned at R
   PeriodicBox<D> box;
+  PeriodicBox<D> wrap_box;  // the integrator's box, which wraps moved positions (shifting)
   // the state
   field_view_t<field::Position, D> x;
   field_view_t<field::Velocity, D> u;

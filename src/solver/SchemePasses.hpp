@@ -74,14 +74,19 @@ double wall_stiffness(const PassContext<D>& c) {
   return kmax;
 }
 
-// particle shifting (kernels/ShiftingPass.hpp); c.box wraps the shifted positions
+// particle shifting (kernels/ShiftingPass.hpp); c.wrap_box wraps the shifted positions; with a
+// free surface possible (c.free_surface allocated) its flags must be fresh, halos included
 template <int D, class K, bool Walls>
 void shifting(const PassContext<D>& c, const field_view_t<field::Position, D>& x_out, const field_view_t<field::Velocity, D>& u_out,
               const field_view_t<field::Density, D>& rho_out, double max_shift) {
   const K W(c.R);
-  Kokkos::parallel_for("ondine::Shifting", range(c),
-                       ShiftingPass<D, K, Walls>{c.list, c.box, W, c.R * c.R, 0.5 * c.R * c.R, W.value(c.dx), max_shift, c.x, c.u,
-                                                 c.rho, c.m, x_out, u_out, rho_out, c.wall, c.wall_cells});
+  auto launch = [&](auto pass) { Kokkos::parallel_for("ondine::Shifting", range(c), pass); };
+  if (c.free_surface.is_allocated())
+    launch(ShiftingPass<D, K, Walls, true>{c.list, c.box, c.wrap_box, W, c.R * c.R, 0.5 * c.R * c.R, W.value(c.dx), max_shift, c.x, c.u,
+                                           c.rho, c.m, x_out, u_out, rho_out, c.wall, c.wall_cells, c.free_surface});
+  else
+    launch(ShiftingPass<D, K, Walls>{c.list, c.box, c.wrap_box, W, c.R * c.R, 0.5 * c.R * c.R, W.value(c.dx), max_shift, c.x, c.u, c.rho,
+                                     c.m, x_out, u_out, rho_out, c.wall, c.wall_cells, {}});
 }
 
 // Shepard sums at a point (2.40-2.41): at radius c.R, or with zones each SPH particle

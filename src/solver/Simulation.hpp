@@ -239,6 +239,11 @@ class Simulation {
   CompiledScheme<D> scheme_;  // every kernel-dependent pass, chosen once (Scheme.hpp)
   WallModel<D> walls_;
   LaplacianWeightView<D> laplacian_weights_;  // scratch of evaluate() (kernels/ConsistentLaplacian.hpp)
+  // scratch of shift_particles(): the shifted state, copied back at once (the stage storage
+  // must keep the step's start for the impermeability guard and the blow-up restore)
+  field_view_t<field::Position, D> shifted_x_;
+  field_view_t<field::Velocity, D> shifted_u_;
+  field_view_t<field::Density, D> shifted_rho_;
   FluidRegion<D> region_;
   double stage_time_ = 0;
   double t_ = 0;

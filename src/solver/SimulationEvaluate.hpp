@@ -87,6 +87,7 @@ PassContext<D> Simulation<D>::pass_context(const LevelSpan<D>& L) const {
   c.cells = domain_.cells();
   c.wall_cells = L.wall_cells;
   c.box = domain_.box();
+  c.wrap_box = domain_.local_box();
   auto take = [&](auto& view, auto tag) {
     if (p_.has(tag)) view = p_.get(tag);
   };
@@ -147,6 +148,7 @@ void Simulation<D>::evaluate(const bool later_stage) {
     if constexpr (D == 3) a.grad_u.g2 = p_.get(field::VelocityGradientZ{});
   }
   a.eos = wall_eos();
+  a.riemann_eta = scene_.riemann_low_dissipation ? 3.0 : 0.0;  // eta of Zhang et al. (2017)
   // scheme.density_gradient: step holds the first stage's gradient through the step (the owned
   // particles carry it through a migration; the halos are refreshed below all the same)
   const bool gradient_pass = gradient && !(later_stage && scene_.density_gradient_once_per_step);

@@ -145,22 +145,30 @@ double Simulation<D>::step(double t_stop) {
   return dt;
 }
 
-// Particle shifting (2.107)-(2.111), once per step: into the stage storage, then copied back.
+// Particle shifting (2.107)-(2.111), once per step: into scratch views, then copied back.
 template <int D>
 void Simulation<D>::shift_particles() {
   ensure_neighbours();
   domain_.refresh_state_halos(p_);
-  const auto x0_ = p_.get(field::StagePosition{});
-  const auto u0_ = p_.get(field::StageVelocity{});
-  const auto rho0_ = p_.get(field::StageDensity{});
-  // the local box: it wraps the shifted positions as the integrator does (shifting with
-  // walls, whose periodic images need the global box, is refused by the case file)
-  PassContext<D> c = pass_context(levels().front());
-  c.box = domain_.local_box();
-  scheme_.shifting(c, x0_, u0_, rho0_, 0.02 * scene_.dx);  // at most 0.02 dx per step (kernels/ShiftingPass.hpp)
-  Kokkos::deep_copy(p_.get(field::Position{}), x0_);
-  Kokkos::deep_copy(p_.get(field::Velocity{}), u0_);
-  Kokkos::deep_copy(p_.get(field::Density{}), rho0_);
+  // with a free surface possible: the flags (4.86)-(4.87) of this state, halos included, for
+  // the surface particles' tangential shift (kernels/ShiftingPass.hpp)
+  if (p_.has(field::FreeSurface{})) {
+    update_free_surface();
+    domain_.refresh(p_, field::FreeSurface{});
+  }
+  const std::size_t n = p_.size();
+  if (shifted_x_.extent(0) != n) {
+    shifted_x_ = decltype(shifted_x_)("ondine::Shifting::x", n);
+    shifted_u_ = decltype(shifted_u_)("ondine::Shifting::u", n);
+    shifted_rho_ = decltype(shifted_rho_)("ondine::Shifting::rho", n);
+  }
+  const PassContext<D> c = pass_context(levels().front());
+  scheme_.shifting(c, shifted_x_, shifted_u_, shifted_rho_, 0.02 * scene_.dx);  // at most 0.02 dx per step (kernels/ShiftingPass.hpp)
+  // the shifted particles [first, end) back into the state
+  const auto owned = std::make_pair(static_cast<std::size_t>(c.first), static_cast<std::size_t>(c.end));
+  Kokkos::deep_copy(Kokkos::subview(p_.get(field::Position{}), owned, Kokkos::ALL), Kokkos::subview(shifted_x_, owned, Kokkos::ALL));
+  Kokkos::deep_copy(Kokkos::subview(p_.get(field::Velocity{}), owned, Kokkos::ALL), Kokkos::subview(shifted_u_, owned, Kokkos::ALL));
+  Kokkos::deep_copy(Kokkos::subview(p_.get(field::Density{}), owned), Kokkos::subview(shifted_rho_, owned));
   domain_.halos_stale();
 }
 
