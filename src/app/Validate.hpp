@@ -13,9 +13,10 @@ struct ValidateOptions {
   std::string level = "quick";     // quick | full
   std::string out_dir = "out/validation";
   std::string source_dir;          // where cases/ and scripts/ are
-  // the fluid flux of every run: "case" (as the case files and entries say) or "riemann"
-  // (Riemann-SPH with MUSCL: scheme_sets() below)
-  std::string scheme = "case";
+  // the fluid flux and the particle transport of every run, "case" for what the case files say:
+  // flux delta_sph or riemann (Riemann-SPH with MUSCL), transport lagrangian or shifting
+  // (scheme_sets() in Validate.cpp); an entry's own overrides still win
+  std::string flux = "case", transport = "case";
 };
 
 // Returns the process exit code: 0 when every run passed its thresholds.

@@ -73,8 +73,10 @@ int run_app(int argc, char** argv, int ranks, int rank, const std::string& no_de
   validate->add_option("--case", vopt.cases, "case name (repeatable; default: all)");
   validate->add_option("--level", vopt.level, "quick (the CI subset) or full (the whole ladder)");
   validate->add_option("--out", vopt.out_dir, "output folder (default: out/validation)");
-  validate->add_option("--scheme", vopt.scheme,
-                       "case (the fluid flux of each case file) or riemann (every run with Riemann-SPH and MUSCL, docs/case-file.md scheme.flux)");
+  validate->add_option("--flux", vopt.flux,
+                       "case (each case file's), delta_sph or riemann (Riemann-SPH with MUSCL): the fluid flux of every run (docs/case-file.md scheme.flux)");
+  validate->add_option("--transport", vopt.transport,
+                       "case (each case file's), lagrangian or shifting: the particle transport of every run (docs/case-file.md scheme.shifting)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
