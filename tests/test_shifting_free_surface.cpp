@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "reference/References.hpp"
+#include "scene/CaseError.hpp"
 #include "scene/CaseFile.hpp"
 #include "solver/Simulation.hpp"
 #include "test_helpers.hpp"
@@ -62,4 +63,20 @@ TEST_CASE("Shifting leaves the dam-break front within the bounds of Martin & Moy
   CHECK(e.at("front_max_relative_error") < 0.20);
   CHECK(d < 0.03);
   CHECK(sim.wall_leaks(0.0) == 0);
+}
+
+TEST_CASE("scheme.transport: lagrangian and shifting are read, ale and a contradiction are refused", "[unit][case]") {
+  CHECK(load_case(src + "/cases/dam_break_2d.yaml", {"scheme.transport=shifting"}).shifting);
+  CHECK_FALSE(load_case(src + "/cases/taylor_green_2d.yaml", {"scheme.shifting=false", "scheme.transport=lagrangian"}).shifting);
+  const auto refused = [](const std::vector<std::string>& sets, const std::string& what) {
+    try {
+      load_case(src + "/cases/taylor_green_2d.yaml", sets);
+      FAIL("accepted");
+    } catch (const CaseError& e) {
+      CHECK_THAT(std::string(e.what()), Catch::Matchers::Contains("scheme.transport") && Catch::Matchers::Contains(what));
+    }
+  };
+  refused({"scheme.transport=ale"}, "not built yet");
+  refused({"scheme.transport=lagrangian"}, "disagrees with scheme.shifting");  // the case file says shifting: true
+  refused({"scheme.transport=eulerian"}, "lagrangian");
 }

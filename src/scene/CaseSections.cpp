@@ -129,7 +129,7 @@ static void read_flux(const Reader& r, const YAML::Node& sc, Scene& s) {
 void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
   if (const YAML::Node sc = root["scheme"]) {
     r.only_keys(sc, "scheme", {"viscous_term", "delta_sph", "artificial_viscosity", "background_pressure",
-                               "time_integrator", "cfl", "shifting", "consistent_laplacian",
+                               "time_integrator", "cfl", "shifting", "transport", "consistent_laplacian",
                                "wall_velocity_reconstruction", "renormalised_continuity", "density_gradient", "flux",
                                "riemann"});
     if (sc["renormalised_continuity"])
@@ -150,6 +150,16 @@ void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
     // with a free surface the surface particles shift tangentially only; with NFM walls the
     // concentration gradient has its wall term (kernels/ShiftingPass.hpp)
     if (sc["shifting"]) s.shifting = r.boolean(sc["shifting"], "scheme.shifting");
+    // scheme.transport: how the particles move; shifting: true is its older spelling
+    if (const YAML::Node t = sc["transport"]) {
+      const std::string w = r.word(t, "scheme.transport", {"lagrangian", "shifting", "ale"});
+      if (w == "ale")
+        r.fail(t, "scheme.transport",
+               "ale (the transport-velocity law of Oger et al., thesis 2.112-2.115) is not built yet; use lagrangian or shifting");
+      if (sc["shifting"] && s.shifting != (w == "shifting"))
+        r.fail(t, "scheme.transport", "disagrees with scheme.shifting; give one of the two");
+      s.shifting = w == "shifting";
+    }
     if (sc["time_integrator"])
       s.integrator = r.word(sc["time_integrator"], "scheme.time_integrator", {"rk4", "predictor_corrector"}) == "rk4"
                          ? TimeIntegrator::RK4 : TimeIntegrator::PredictorCorrector;
