@@ -54,7 +54,7 @@ struct DensityGradientPass {
     constexpr int K = Basis::K;
     double moments[K][K];  // sum c psi psi^T / r^2 (kernels/ConsistentLaplacian.hpp)
     double shepard = 0.0;
-    Mat<D> G = Mat<D>::zero();  // Velocity: sum_j w_j (u_j - u_i) (x) grad_i W_ij
+    VelocityGradientSum<D> vel;  // Velocity: its G = sum_j w_j (u_j - u_i) (x) grad_i W_ij (M is the pass's own)
     Vec<D> ui;
     if constexpr (Velocity) ui = load<D>(u, i);
     if constexpr (ConsistentLaplacian) {
@@ -73,7 +73,7 @@ struct DensityGradientPass {
       if constexpr (Velocity) {
         const Vec<D> du = load<D>(u, j) - ui;
         for (int a = 0; a < D; ++a)
-          for (int b = 0; b < D; ++b) G.a[a][b] += w * du[a] * gradW[b];
+          for (int b = 0; b < D; ++b) vel.G.a[a][b] += w * du[a] * gradW[b];
       }
       if constexpr (ConsistentLaplacian) {
         Basis::accumulate(moments, w * (rho_i + rho_j) / rho_i * dWdr / r / (r * r), xij);
@@ -88,16 +88,10 @@ struct DensityGradientPass {
         for (int b = 0; b < D; ++b) r[a] += B.a[b][a] * g[b];  // B^T g
       }
       g = r;
-      if constexpr (Velocity) {
-        Mat<D> GB = Mat<D>::zero();  // G B: row a is the gradient of u_a
-        for (int a = 0; a < D; ++a)
-          for (int b = 0; b < D; ++b)
-            for (int c = 0; c < D; ++c) GB.a[a][b] += G.a[a][c] * B.a[c][b];
-        G = GB;
-      }
+      if constexpr (Velocity) vel.G = vel.gradient(B);  // G B: row a is the gradient of u_a
     }
     store<D>(grad_rho, i, g);
-    if constexpr (Velocity) grad_u.store(i, G);
+    if constexpr (Velocity) grad_u.store(i, vel.G);
     if constexpr (ConsistentLaplacian) {
       // the no-slip wall points (4.85): k_q = 2 s_q W / d_n, the wall velocity as f_q
       int first = -1;

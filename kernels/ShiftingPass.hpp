@@ -67,11 +67,14 @@ struct ShiftingPass {
       const double rho_j = rho(j);
       const double w = m(j) / rho_j;
       const Vec<D> gradW = (W.derivative(r) / r) * xij;
-      const double ratio = W.value(r) / W_dx;
-      const double f = 0.2 * ratio * ratio * ratio * ratio;
       // the anti-clumping part (2.111) only without walls and surface: see the note above
-      if constexpr (!Walls && !Surface) gradC += (w * (1.0 + f)) * gradW;
-      else gradC += w * gradW;
+      if constexpr (!Walls && !Surface) {
+        const double ratio = W.value(r) / W_dx;
+        const double f = 0.2 * ratio * ratio * ratio * ratio;
+        gradC += (w * (1.0 + f)) * gradW;
+      } else {
+        gradC += w * gradW;
+      }
       S.add(w, xij, gradW, load<D>(u, j) - ui);
       grho += (w * (rho_j - rho_i)) * gradW;
       if constexpr (Surface) {

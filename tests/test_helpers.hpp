@@ -6,10 +6,22 @@
 #include <utility>
 #include <vector>
 
+#include "scene/CaseError.hpp"
 #include "scene/CaseFile.hpp"
 #include "solver/Simulation.hpp"
 
 namespace ondine::test {
+
+// The message with which the parser refuses cases/<file> with these --set overrides, or
+// "accepted" where it takes them.
+inline std::string case_refusal(const std::string& file, const std::vector<std::string>& sets) {
+  try {
+    load_case(std::string(ONDINE_SOURCE_DIR) + "/cases/" + file, sets);
+  } catch (const CaseError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
 
 // A periodic box of fluid, dimension D, side L, spacing dx, with the scheme given as YAML.
 inline Scene periodic_box(int D, double L, double dx, const std::string& scheme, const std::string& fluid_extra = "",
