@@ -35,6 +35,11 @@ ONDINE_FIELD(DensityGradient, "density_gradient", double, true);
 ONDINE_FIELD_(VelocityGradientX, "velocity_gradient_x", double, true, false);
 ONDINE_FIELD_(VelocityGradientY, "velocity_gradient_y", double, true, false);
 ONDINE_FIELD_(VelocityGradientZ, "velocity_gradient_z", double, true, false);
+// The transport-velocity correction du_i of Oger et al.'s law (2.113): the particles move with
+// u0 = u + du (scheme.transport: ale); recomputed at every stage.
+ONDINE_FIELD(TransportCorrection, "transport_correction", double, true);
+// d(m_i)/dt of Vila's Riemann-SPH in ALE form (2.86): the masses change by the mass fluxes.
+ONDINE_FIELD_(MassRate, "mass_rate", double, false, false);
 // Shepard factor gamma_i of the NFM walls (thesis 4.17, 4.52): 1 away from walls.
 ONDINE_FIELD(ShepardGamma, "shepard_gamma", double, false);
 // Free-surface flag from the NFM renormalisation matrix and normal (4.86)-(4.87): 1 on the surface.
@@ -56,6 +61,8 @@ ONDINE_FIELD_(AprParent, "parent_id", std::int64_t, false, false);
 ONDINE_FIELD_(StagePosition, "stage_position", double, true, false);
 ONDINE_FIELD_(StageVelocity, "stage_velocity", double, true, false);
 ONDINE_FIELD_(StageDensity, "stage_density", double, false, false);
+ONDINE_FIELD_(StageMass, "stage_mass", double, false, false);
+ONDINE_FIELD_(StageMassSum, "stage_mass_sum", double, false, false);
 ONDINE_FIELD_(StagePositionSum, "stage_position_sum", double, true, false);
 ONDINE_FIELD_(StageVelocitySum, "stage_velocity_sum", double, true, false);
 ONDINE_FIELD_(StageDensitySum, "stage_density_sum", double, false, false);

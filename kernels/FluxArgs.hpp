@@ -32,6 +32,8 @@ struct FluxArgs {
   WallEos eos{1, 1, 1};      // Riemann-SPH: c(rho) (1.9)
   double riemann_eta = 0;    // Riemann-SPH: > 0 the low-dissipation pressure (kernels/terms/RiemannLeduc.hpp)
   VelocityGradientRows<D> grad_u;  // Riemann-SPH with MUSCL (with grad_rho)
+  field_view_t<field::TransportCorrection, D> du0;  // scheme.transport: ale (u0 = u + du0)
+  field_view_t<field::MassRate, D> dm;               // Vila's ALE form: dm/dt, written by the flux pass
 };
 
 template <int D>

@@ -1,7 +1,7 @@
 #pragma once
 // The generic pair loop: for each particle i, over its neighbours j within R,
 // builds PairData and applies the term pack; writes du/dt (with the body force)
-// and drho/dt. Full neighbour list, one thread per particle, no atomics.
+// and drho/dt (and dm/dt with mass fluxes). Full neighbour list, one thread per particle, no atomics.
 #include <string>
 
 #include "kernels/NeighbourList.hpp"
@@ -25,6 +25,7 @@ struct FluxPass {
   field_view_t<field::Acceleration, D> du;
   field_view_t<field::DensityRate, D> drho;
   TermPack terms;
+  field_view_t<field::MassRate, D> dm = {};  // allocated with mass fluxes (Vila's ALE form) only
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     PairData<D> q;
@@ -49,6 +50,7 @@ struct FluxPass {
     });
     store<D>(du, i, s.du + body);
     drho(i) = s.drho;
+    if (dm.data() != nullptr) dm(i) = s.dm;
   }
 
   void run(int n) const { run(0, n); }

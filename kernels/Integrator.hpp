@@ -9,7 +9,9 @@ namespace ondine {
 
 // The fields an explicit Runge-Kutta update reads and writes: the state y, its
 // derivatives k (du/dt, drho/dt, and u for dx/dt), the state y0 at the start of
-// the step and the RK4 weighted sums (unused by the midpoint scheme).
+// the step and the RK4 weighted sums (unused by the midpoint scheme). With the transport
+// velocity of Oger et al. (scheme.transport: ale) the positions move with u0 = u + du0 (2.112);
+// with Vila's ALE fluxes (2.86) the masses are part of the state.
 template <int D>
 struct RungeKuttaViews {
   field_view_t<field::Position, D> x;
@@ -20,6 +22,13 @@ struct RungeKuttaViews {
   field_view_t<field::Position, D> x0, xa;
   field_view_t<field::Velocity, D> u0, ua;
   field_view_t<field::Density, D> r0, ra;
+  field_view_t<field::TransportCorrection, D> du0 = {};  // allocated with scheme.transport: ale
+  field_view_t<field::Mass, D> m = {}, m0 = {}, ma = {};  // allocated with Vila's mass fluxes
+  field_view_t<field::MassRate, D> dm = {};
+  bool transport = false, masses = false;
+
+  // dx/dt: u, or u0 = u + du0 (2.112)
+  KOKKOS_INLINE_FUNCTION double position_rate(const int i, const int k) const { return transport ? u(i, k) + du0(i, k) : u(i, k); }
 };
 
 // One stage: y = y0 + c_dt k, and, when accumulate is set, the RK4 weighted sum
@@ -33,7 +42,7 @@ struct RungeKuttaStage {
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     for (int k = 0; k < D; ++k) {
-      const double uk = v.u(i, k);
+      const double uk = v.position_rate(i, k);
       if (accumulate) {
         v.xa(i, k) = (first ? 0.0 : v.xa(i, k)) + w * uk;
         v.ua(i, k) = (first ? 0.0 : v.ua(i, k)) + w * v.du(i, k);
@@ -43,6 +52,10 @@ struct RungeKuttaStage {
     }
     if (accumulate) v.ra(i) = (first ? 0.0 : v.ra(i)) + w * v.drho(i);
     v.rho(i) = v.r0(i) + c_dt * v.drho(i);
+    if (v.masses) {
+      if (accumulate) v.ma(i) = (first ? 0.0 : v.ma(i)) + w * v.dm(i);
+      v.m(i) = v.m0(i) + c_dt * v.dm(i);
+    }
   }
 
   void run(int n) const { Kokkos::parallel_for("ondine::Integrator::stage", Kokkos::RangePolicy<ExecSpace>(0, n), *this); }
@@ -57,11 +70,12 @@ struct RungeKutta4Final {
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     for (int k = 0; k < D; ++k) {
-      const double uk = v.u(i, k);
+      const double uk = v.position_rate(i, k);
       v.x(i, k) = box.wrap(v.x0(i, k) + dt * (v.xa(i, k) + uk / 6.0), k);
       v.u(i, k) = v.u0(i, k) + dt * (v.ua(i, k) + v.du(i, k) / 6.0);
     }
     v.rho(i) = v.r0(i) + dt * (v.ra(i) + v.drho(i) / 6.0);
+    if (v.masses) v.m(i) = v.m0(i) + dt * (v.ma(i) + v.dm(i) / 6.0);
   }
 
   void run(int n) const {

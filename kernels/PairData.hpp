@@ -19,11 +19,13 @@ struct PairData {
   Vec<D> u_i, u_j;
 };
 
-// Per-particle accumulator of the flux pass: du/dt and drho/dt.
+// Per-particle accumulator of the flux pass: du/dt and drho/dt, and dm/dt for the terms with
+// mass fluxes (Vila's Riemann-SPH in ALE form).
 template <int D>
 struct FluxSum {
   Vec<D> du;
   double drho;
+  double dm = 0.0;
 };
 
 }  // namespace ondine

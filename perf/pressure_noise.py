@@ -1,8 +1,10 @@
 #!/usr/bin/python3
 """Pressure noise and long-time particle regularity, per fluid flux (scheme.flux).
 
-For each scheme (delta_sph as the case files say; riemann: Riemann-SPH with MUSCL; each also
-with particle shifting, _shifting):
+For each scheme (delta_sph as the case files say; riemann: Riemann-SPH with MUSCL, Leduc's form;
+each also with particle shifting, _shifting; riemann_ale: Leduc's form moved by Oger's transport
+velocity (2.101); riemann_vila: Vila's form with mass fluxes (2.84-2.89), Lagrangian;
+riemann_vila_ale: Vila's ALE form with Oger's transport velocity):
   * hydrostatic_tank_2d run to T_TANK s (20 by default, the shipped 0.5 s damping kept), the
     bottom probe sampled every 2 ms;
   * dam_break_impact_2d (0.35 s: the surge hits the right wall at about 0.2 s), the right-wall
@@ -36,8 +38,11 @@ ondine = os.environ.get("ONDINE", os.path.join(here, "build", "ondine"))
 if not os.access(ondine, os.X_OK):
     sys.exit("perf/pressure_noise.py: build first (make build): no " + ondine)
 RIEMANN = ["scheme.flux=riemann", "scheme.delta_sph=0", "scheme.density_gradient=stage"]
+VILA = RIEMANN + ["scheme.riemann.variant=vila"]
 SCHEMES = {"delta_sph": [], "delta_sph_shifting": ["scheme.shifting=true"],
-           "riemann": RIEMANN, "riemann_shifting": RIEMANN + ["scheme.shifting=true"]}
+           "riemann": RIEMANN, "riemann_shifting": RIEMANN + ["scheme.shifting=true"],
+           "riemann_ale": RIEMANN + ["scheme.transport=ale"],
+           "riemann_vila": VILA, "riemann_vila_ale": VILA + ["scheme.transport=ale"]}
 for s in args.schemes.split():
     if s not in SCHEMES:
         sys.exit("perf/pressure_noise.py: unknown scheme '%s' (expected some of %s)" % (s, " ".join(SCHEMES)))

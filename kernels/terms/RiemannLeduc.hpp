@@ -77,10 +77,21 @@ struct RiemannLeduc {
     return kmath::sqrt(eos.c2(rho));
   }
 
-  KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {
-    const Vec<D> n = (-1.0 / q.r) * q.xij;  // from i to j
-    double rho_L = q.rho_i, rho_R = q.rho_j;
-    Vec<D> u_L = q.u_i, u_R = q.u_j;
+  // The pair's Riemann problem along n_ij: the states of i (L) and j (R) at the midpoint,
+  // reconstructed by MUSCL with Muscl, and its solution (2.100) or the low-dissipation one
+  struct Solution {
+    Vec<D> n;                   // from i to j
+    double rho_L, rho_R, P_L, P_R, c_L, c_R;
+    Vec<D> u_L, u_R;
+    AcousticRiemann E;          // u_E along n, P_E
+  };
+  KOKKOS_INLINE_FUNCTION Solution solve(const PairData<D>& q) const {
+    Solution z;
+    z.n = (-1.0 / q.r) * q.xij;
+    z.rho_L = q.rho_i;
+    z.rho_R = q.rho_j;
+    z.u_L = q.u_i;
+    z.u_R = q.u_j;
     if constexpr (Muscl) {
       // x_mid - x_i = -x_ij / 2, x_mid - x_j = +x_ij / 2
       double sr_i = 0.0, sr_j = 0.0;
@@ -88,24 +99,31 @@ struct RiemannLeduc {
         sr_i -= 0.5 * grad_rho(q.i, b) * q.xij[b];
         sr_j += 0.5 * grad_rho(q.j, b) * q.xij[b];
       }
-      rho_L = muscl_midpoint(q.rho_i, q.rho_j, sr_i);
-      rho_R = muscl_midpoint(q.rho_j, q.rho_i, sr_j);
+      z.rho_L = muscl_midpoint(q.rho_i, q.rho_j, sr_i);
+      z.rho_R = muscl_midpoint(q.rho_j, q.rho_i, sr_j);
       for (int k = 0; k < D; ++k) {
         double su_i = 0.0, su_j = 0.0;
         for (int b = 0; b < D; ++b) {
           su_i -= 0.5 * grad_u(q.i, k, b) * q.xij[b];
           su_j += 0.5 * grad_u(q.j, k, b) * q.xij[b];
         }
-        u_L[k] = muscl_midpoint(q.u_i[k], q.u_j[k], su_i);
-        u_R[k] = muscl_midpoint(q.u_j[k], q.u_i[k], su_j);
+        z.u_L[k] = muscl_midpoint(q.u_i[k], q.u_j[k], su_i);
+        z.u_R[k] = muscl_midpoint(q.u_j[k], q.u_i[k], su_j);
       }
     }
-    const double c_i = sound_speed(q.rho_i), c_j = sound_speed(q.rho_j);
-    const double P_L = q.P_i + c_i * c_i * (rho_L - q.rho_i), P_R = q.P_j + c_j * c_j * (rho_R - q.rho_j);
-    const AcousticRiemann E = eta > 0.0 ? low_dissipation_riemann(rho_L, c_i, dot(u_L, n), P_L, rho_R, c_j, dot(u_R, n), P_R, eta)
-                                        : acoustic_riemann(rho_L * c_i, dot(u_L, n), P_L, rho_R * c_j, dot(u_R, n), P_R);
-    s.du += (-2.0 * q.omega_j * E.P * q.inv_rho_i) * q.gradW;
-    s.drho -= 2.0 * q.rho_i * q.omega_j * (E.u * dot(n, q.gradW) - dot(q.u_i, q.gradW));
+    z.c_L = sound_speed(q.rho_i);
+    z.c_R = sound_speed(q.rho_j);
+    z.P_L = q.P_i + z.c_L * z.c_L * (z.rho_L - q.rho_i);
+    z.P_R = q.P_j + z.c_R * z.c_R * (z.rho_R - q.rho_j);
+    z.E = eta > 0.0 ? low_dissipation_riemann(z.rho_L, z.c_L, dot(z.u_L, z.n), z.P_L, z.rho_R, z.c_R, dot(z.u_R, z.n), z.P_R, eta)
+                    : acoustic_riemann(z.rho_L * z.c_L, dot(z.u_L, z.n), z.P_L, z.rho_R * z.c_R, dot(z.u_R, z.n), z.P_R);
+    return z;
+  }
+
+  KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {
+    const Solution z = solve(q);
+    s.du += (-2.0 * q.omega_j * z.E.P * q.inv_rho_i) * q.gradW;
+    s.drho -= 2.0 * q.rho_i * q.omega_j * (z.E.u * dot(z.n, q.gradW) - dot(q.u_i, q.gradW));
   }
 };
 

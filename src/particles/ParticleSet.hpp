@@ -21,9 +21,11 @@ class ParticleSet {
                             field::Mass, field::GlobalId, field::Acceleration, field::DensityRate,
                             field::DensityGradient, field::VelocityGradientX, field::VelocityGradientY,
                             field::VelocityGradientZ, field::ShepardGamma, field::FreeSurface,
+                            field::TransportCorrection, field::MassRate,
                             field::AprLevel, field::AprBirthLevel, field::AprGuard, field::AprMother, field::AprParent,
                             field::StagePosition, field::StageVelocity, field::StageDensity,
-                            field::StagePositionSum, field::StageVelocitySum, field::StageDensitySum>;
+                            field::StagePositionSum, field::StageVelocitySum, field::StageDensitySum,
+                            field::StageMass, field::StageMassSum>;
   static constexpr int dimension = D;
 
   explicit ParticleSet(std::size_t n = 0) : n_(n) {}

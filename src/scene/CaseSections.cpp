@@ -109,12 +109,17 @@ static void read_flux(const Reader& r, const YAML::Node& sc, Scene& s) {
     if (rs["dissipation"])
       s.riemann_low_dissipation = r.word(rs["dissipation"], "scheme.riemann.dissipation", {"acoustic", "low"}) == "low";
     if (rs["variant"])
-      r.word(rs["variant"], "scheme.riemann.variant", {"leduc"});  // Vila's mass fluxes (2.74)-(2.77) need the ALE masses
+      s.riemann_variant = r.word(rs["variant"], "scheme.riemann.variant", {"leduc", "vila"}) == "vila" ? RiemannVariant::Vila : RiemannVariant::Leduc;
     if (rs["reconstruction"])
       s.riemann_muscl = r.word(rs["reconstruction"], "scheme.riemann.reconstruction", {"muscl", "none"}) == "muscl";
     if (rs["limiter"]) r.word(rs["limiter"], "scheme.riemann.limiter", {"minmod"});
   }
-  if (s.flux != FluxScheme::Riemann) return;
+  if (s.flux != FluxScheme::Riemann) {
+    if (s.ale)
+      r.fail(sc["transport"], "scheme.transport",
+             "ale is built on Riemann-SPH (thesis 2.84-2.89 and 2.101): set scheme.flux: riemann, or use shifting with delta_sph");
+    return;
+  }
   if (s.delta_sph > 0)
     r.fail(sc["delta_sph"], "scheme.delta_sph",
            "is the density diffusion of the delta_sph flux; with scheme.flux: riemann the Riemann solver (2.100) dissipates: remove it or set 0");
@@ -131,7 +136,7 @@ void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
     r.only_keys(sc, "scheme", {"viscous_term", "delta_sph", "artificial_viscosity", "background_pressure",
                                "time_integrator", "cfl", "shifting", "transport", "consistent_laplacian",
                                "wall_velocity_reconstruction", "renormalised_continuity", "density_gradient", "flux",
-                               "riemann"});
+                               "riemann", "ale"});
     if (sc["renormalised_continuity"])
       s.renormalised_continuity = r.boolean(sc["renormalised_continuity"], "scheme.renormalised_continuity");
     if (sc["wall_velocity_reconstruction"])
@@ -153,12 +158,19 @@ void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
     // scheme.transport: how the particles move; shifting: true is its older spelling
     if (const YAML::Node t = sc["transport"]) {
       const std::string w = r.word(t, "scheme.transport", {"lagrangian", "shifting", "ale"});
-      if (w == "ale")
-        r.fail(t, "scheme.transport",
-               "ale (the transport-velocity law of Oger et al., thesis 2.112-2.115) is not built yet; use lagrangian or shifting");
       if (sc["shifting"] && s.shifting != (w == "shifting"))
         r.fail(t, "scheme.transport", "disagrees with scheme.shifting; give one of the two");
       s.shifting = w == "shifting";
+      s.ale = w == "ale";
+    }
+    // scheme.ale: the transport-velocity law's characteristic velocity U_char = Ma c0 (2.113)
+    if (const YAML::Node a = sc["ale"]) {
+      if (!s.ale) r.fail(a, "scheme.ale", "is read with scheme.transport: ale only");
+      r.only_keys(a, "scheme.ale", {"mach"});
+      if (a["mach"]) {
+        s.ale_mach = r.non_negative(a["mach"], "scheme.ale.mach", " (U_char / c0 of thesis 2.113)");
+        if (s.ale_mach <= 0 || s.ale_mach > 1) r.fail(a["mach"], "scheme.ale.mach", "expected 0 < Ma <= 1 (U_char = Ma c0 of thesis 2.113)");
+      }
     }
     if (sc["time_integrator"])
       s.integrator = r.word(sc["time_integrator"], "scheme.time_integrator", {"rk4", "predictor_corrector"}) == "rk4"

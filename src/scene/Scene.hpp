@@ -17,6 +17,9 @@ enum class EosLaw { Tait, Linear };
 // The fluid flux: the centred scheme with delta-SPH (2.60) and artificial viscosity (2.58), or
 // Riemann-SPH of Leduc et al. (2.90)-(2.101) with the acoustic solver (2.100)
 enum class FluxScheme { DeltaSph, Riemann };
+// Riemann-SPH's form: Leduc et al. (no mass flux, 2.90-2.101) or Vila's ALE form with mass
+// fluxes (2.84-2.89)
+enum class RiemannVariant { Leduc, Vila };
 enum class ViscousTerm { None, Morris, MonaghanGingold };
 enum class TimeIntegrator { RK4, PredictorCorrector };
 
@@ -144,13 +147,16 @@ struct Scene {
 
   // scheme
   FluxScheme flux = FluxScheme::DeltaSph;
-  bool riemann_muscl = true;
-  bool riemann_low_dissipation = true;  // Riemann-SPH: the low-dissipation pressure of Zhang et al. (2017); false: (2.100) as printed  // Riemann-SPH: MUSCL reconstruction with minmod (2.78)-(2.83); false: first order
+  bool riemann_muscl = true;  // Riemann-SPH: MUSCL reconstruction with minmod (2.78)-(2.83); false: first order
+  bool riemann_low_dissipation = true;  // Riemann-SPH: the low-dissipation pressure of Zhang et al. (2017); false: (2.100) as printed
+  RiemannVariant riemann_variant = RiemannVariant::Leduc;
   ViscousTerm viscous_term = ViscousTerm::None;
   double delta_sph = 0.0;             // 0 = no delta-SPH term (2.60)
   double artificial_viscosity = 0.0;  // alpha of (2.58); 0 = off
   bool background_pressure = false;   // tensile correction (2.105)
-  bool shifting = false;              // particle shifting (2.107)-(2.111), flows without free surface
+  bool shifting = false;              // particle shifting (2.107)-(2.111) (scheme.transport: shifting)
+  bool ale = false;                   // the transport-velocity law of Oger et al. (2.112)-(2.115) (scheme.transport: ale)
+  double ale_mach = 0.1;              // U_char = Ma c0 of (2.113)
   bool consistent_laplacian = true;   // Morris scenes with no-slip walls: the consistent Laplacian (false: the thesis' operator)
   bool renormalised_continuity = false;  // drho/dt from the renormalised divergence (2.42-2.44, 4.86; kernels/RenormalisedContinuity.hpp)
   bool wall_velocity_reconstruction = false;  // MUSCL state of u at NFM wall points (4.30; kernels/WallVelocityState.hpp)

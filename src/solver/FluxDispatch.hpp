@@ -17,6 +17,7 @@
 #include "kernels/terms/MorrisViscosity.hpp"
 #include "kernels/terms/PressureGradient.hpp"
 #include "kernels/terms/RiemannLeduc.hpp"
+#include "kernels/terms/RiemannVila.hpp"
 #include "scene/Scene.hpp"
 
 namespace ondine {
@@ -36,6 +37,10 @@ T make_term(const FluxArgs<D>& a) {
   else if constexpr (std::is_same<T, term::BackgroundPressure>::value) return T{a.P_min};
   else if constexpr (std::is_same<T, term::RiemannLeduc<D, true>>::value) return T{a.eos, a.riemann_eta, a.grad_rho, a.grad_u};
   else if constexpr (std::is_same<T, term::RiemannLeduc<D, false>>::value) return T{a.eos, a.riemann_eta, {}, {}};
+  else if constexpr (std::is_same<T, term::RiemannVila<D, true>>::value)
+    return T{make_term<D, term::RiemannLeduc<D, true>>(a), a.m, a.du0};
+  else if constexpr (std::is_same<T, term::RiemannVila<D, false>>::value)
+    return T{make_term<D, term::RiemannLeduc<D, false>>(a), a.m, a.du0};
   else return T{};
 }
 
@@ -43,7 +48,7 @@ template <int D, class Kernel, class... T>
 void run_flux(const FluxArgs<D>& a) {
   using Pack = Terms<T...>;
   FluxPass<D, Kernel, Pack> pass{a.list, a.box, Kernel(a.R), a.R * a.R, a.body, a.x, a.u, a.rho, a.P, a.m,
-                                 a.du, a.drho, Pack(make_term<D, T>(a)...)};
+                                 a.du, a.drho, Pack(make_term<D, T>(a)...), a.dm};
   pass.run(a.first, a.first + a.n);
 }
 
@@ -77,6 +82,10 @@ template <int D, class Kernel>
 FluxFunction<D> select_flux(const Scene& s) {
   using Base = TypeList<term::PressureGradient, term::Continuity>;
   // Riemann-SPH replaces the centred pressure gradient and continuity (and delta-SPH)
+  if (s.flux == FluxScheme::Riemann && s.riemann_variant == RiemannVariant::Vila) {
+    if (s.riemann_muscl) return detail::with_viscous<D, Kernel>(s, TypeList<term::RiemannVila<D, true>>{});
+    return detail::with_viscous<D, Kernel>(s, TypeList<term::RiemannVila<D, false>>{});
+  }
   if (s.flux == FluxScheme::Riemann) {
     if (s.riemann_muscl) return detail::with_viscous<D, Kernel>(s, TypeList<term::RiemannLeduc<D, true>>{});
     return detail::with_viscous<D, Kernel>(s, TypeList<term::RiemannLeduc<D, false>>{});

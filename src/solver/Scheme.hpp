@@ -40,6 +40,8 @@ struct PassContext {
   field_view_t<field::ShepardGamma, D> gamma;
   field_view_t<field::DensityRate, D> drho;
   field_view_t<field::FreeSurface, D> free_surface;
+  field_view_t<field::TransportCorrection, D> du0;  // scheme.transport: ale, written by transport_velocity
+  double u_char = 0;                                  // U_char = Ma c0 of (2.113)
   // walls
   WallPoints<D> wall;
   WallFacets<D> facets;  // segments (2D) or triangles (3D)
@@ -64,6 +66,7 @@ struct CompiledScheme {
   Pass density_gradient = nullptr;          // and the consistent Laplacian's weights next to no-slip walls
   Pass renormalised_continuity = nullptr;   // scheme.renormalised_continuity
   Pass free_surface = nullptr;              // (4.86)-(4.87) into ctx.free_surface
+  Pass transport_velocity = nullptr;        // Oger's law (2.112)-(2.115), (4.89) into ctx.du0; its surface flags must be fresh
   double (*wall_stiffness)(const PassContext<D>&) = nullptr;  // max kappa_i of (4.85), with viscous walls
   // particle shifting (2.107)-(2.111) from ctx's state into (x_out, u_out, rho_out)
   void (*shifting)(const PassContext<D>&, const field_view_t<field::Position, D>&, const field_view_t<field::Velocity, D>&,

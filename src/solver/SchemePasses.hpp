@@ -5,6 +5,7 @@
 #include "kernels/DensityGradientPass.hpp"
 #include "kernels/FreeSurfacePass.hpp"
 #include "kernels/MorrisLatticeFactor.hpp"
+#include "kernels/OgerVelocityLaw.hpp"
 #include "kernels/ProbeSum.hpp"
 #include "kernels/RenormalisedContinuity.hpp"
 #include "kernels/ShiftingPass.hpp"
@@ -62,6 +63,22 @@ void free_surface(const PassContext<D>& c) {
   Kokkos::parallel_for("ondine::FreeSurface", range(c),
                        FreeSurfacePass<D, K, Walls>{c.list, c.box, W, c.R, c.R * c.R, c.wall, c.wall_cells, c.x, c.rho, c.m,
                                                     Walls ? c.gamma : field_view_t<field::ShepardGamma, D>(), c.free_surface});
+}
+
+// the transport-velocity correction of Oger et al. (kernels/OgerVelocityLaw.hpp), R_d = 2 dx
+// (at most R); with a free surface possible its flags must be fresh, halos included
+template <int D, class K, bool Walls>
+void transport_velocity(const PassContext<D>& c) {
+  const double R_d = c.R < 2.0 * c.dx ? c.R : 2.0 * c.dx;
+  const K W(c.R), W_d(R_d);
+  const auto gamma = Walls ? c.gamma : field_view_t<field::ShepardGamma, D>();
+  auto launch = [&](auto pass) { Kokkos::parallel_for("ondine::TransportVelocity", range(c), pass); };
+  if (c.free_surface.is_allocated())
+    launch(OgerVelocityLaw<D, K, Walls, true>{c.list, c.box, W, W_d, c.R, c.R * c.R, R_d * R_d, c.rho0, c.u_char, c.x, c.u, c.rho, c.m,
+                                              c.du0, c.wall, c.wall_cells, gamma, c.free_surface});
+  else
+    launch(OgerVelocityLaw<D, K, Walls>{c.list, c.box, W, W_d, c.R, c.R * c.R, R_d * R_d, c.rho0, c.u_char, c.x, c.u, c.rho, c.m, c.du0,
+                                        c.wall, c.wall_cells, gamma, {}});
 }
 
 // max_i kappa_i of the no-slip wall term (4.85) (kernels/WallFluxPass.hpp)
@@ -167,6 +184,7 @@ CompiledScheme<D> compile(const Scene& s) {
   c.renormalised_continuity = walls ? &renormalised_continuity<D, K, true> : &renormalised_continuity<D, K, false>;
   c.free_surface = walls ? &free_surface<D, K, true> : &free_surface<D, K, false>;
   c.wall_stiffness = &wall_stiffness<D, K>;
+  if (s.ale) c.transport_velocity = walls ? &transport_velocity<D, K, true> : &transport_velocity<D, K, false>;
   c.shifting = walls ? &shifting<D, K, true> : &shifting<D, K, false>;
   c.probe_sum = levels ? &probe_sum<D, K, true> : &probe_sum<D, K, false>;
   c.gauge_sums = levels ? &gauge_sums<D, K, true> : &gauge_sums<D, K, false>;

@@ -56,6 +56,8 @@ FluxArgs<D> Simulation<D>::state_flux_args(int n) {
   a.m = p_.get(field::Mass{});
   a.du = p_.get(field::Acceleration{});
   a.drho = p_.get(field::DensityRate{});
+  if (p_.has(field::TransportCorrection{})) a.du0 = p_.get(field::TransportCorrection{});
+  if (p_.has(field::MassRate{})) a.dm = p_.get(field::MassRate{});
   // the lattice factor scales the plain Morris term; the consistent one has its own weights
   a.nu = scene_.viscous_term == ViscousTerm::Morris && !uses_consistent_laplacian(scene_) ? scene_.nu * scheme_.morris_factor : scene_.nu;
   if (consistent_laplacian()) {
@@ -103,6 +105,8 @@ PassContext<D> Simulation<D>::pass_context(const LevelSpan<D>& L) const {
   take(c.gamma, field::ShepardGamma{});
   take(c.drho, field::DensityRate{});
   take(c.free_surface, field::FreeSurface{});
+  take(c.du0, field::TransportCorrection{});
+  c.u_char = scene_.ale_mach * scene_.c0;
   c.wall = L.wall;
   c.facets = walls_.facets();
   c.facet_cells = walls_.facet_cells();
@@ -125,6 +129,7 @@ template <int D>
 void Simulation<D>::evaluate(const bool later_stage) {
   ensure_neighbours();                 // with zones: lists only; roles change at a step start
   domain_.refresh_state_halos(p_);     // several ranks: this stage's halos (with zones: the guards' sources)
+  if (p_.has(field::MassRate{})) domain_.refresh(p_, field::Mass{});  // Vila's ALE fluxes change the masses
   const int n = n_own_, n_all = static_cast<int>(p_.size());
   const bool walls = !walls_.empty();
   if (walls) update_walls(stage_time_);
@@ -159,6 +164,18 @@ void Simulation<D>::evaluate(const bool later_stage) {
     if (walls)
       Kokkos::parallel_for("ondine::NFM::shepard_gamma", range, ShepardGammaPass<D>{walls_.facets(), walls_.facet_cells(), L.R, domain_.box(), a.x, gamma});
     if (gradient_pass) scheme_.density_gradient(pass_context(L));
+  }
+  // scheme.transport: ale: the transport velocity's correction (2.113) at this stage, with the
+  // free-surface flags (4.86)-(4.87) of the step's first stage
+  if (scheme_.transport_velocity) {
+    if (!later_stage && p_.has(field::FreeSurface{})) {
+      for (const LevelSpan<D>& L : levels)
+        if (L.active_end > L.first) scheme_.free_surface(pass_context(L));
+      domain_.refresh(p_, field::FreeSurface{});
+    }
+    for (const LevelSpan<D>& L : levels)
+      if (L.active_end > L.first) scheme_.transport_velocity(pass_context(L));
+    domain_.refresh(p_, field::TransportCorrection{});
   }
   // with zones the guards' density gradient came with their interpolation (GuardInterpolation.hpp)
   if (gradient) domain_.refresh(p_, field::DensityGradient{});

@@ -53,6 +53,8 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
     if constexpr (D == 3) p_.allocate(field::VelocityGradientZ{});
   }
   if (walls) p_.allocate(field::ShepardGamma{});
+  if (scene.ale) p_.allocate(field::TransportCorrection{});
+  if (scene.flux == FluxScheme::Riemann && scene.riemann_variant == RiemannVariant::Vila) p_.allocate(field::MassRate{});
   bool free_surface_possible = false;
   for (int k = 0; k < D; ++k) free_surface_possible = free_surface_possible || !scene.periodic[k];
   if (free_surface_possible) p_.allocate(field::FreeSurface{});

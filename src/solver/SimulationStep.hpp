@@ -54,7 +54,7 @@ double Simulation<D>::time_step() const {
 template <int D>
 RungeKuttaViews<D> Simulation<D>::stage_views() const {
   const bool rk4 = scene_.integrator == TimeIntegrator::RK4;
-  return {p_.get(field::Position{}),
+  RungeKuttaViews<D> v{p_.get(field::Position{}),
           p_.get(field::Velocity{}),
           p_.get(field::Density{}),
           p_.get(field::Acceleration{}),
@@ -65,6 +65,18 @@ RungeKuttaViews<D> Simulation<D>::stage_views() const {
           rk4 ? p_.get(field::StageVelocitySum{}) : field_view_t<field::Velocity, D>(),
           p_.get(field::StageDensity{}),
           rk4 ? p_.get(field::StageDensitySum{}) : field_view_t<field::Density, D>()};
+  if (p_.has(field::TransportCorrection{})) {
+    v.du0 = p_.get(field::TransportCorrection{});
+    v.transport = true;
+  }
+  if (p_.has(field::MassRate{})) {
+    v.m = p_.get(field::Mass{});
+    v.m0 = p_.get(field::StageMass{});
+    if (rk4) v.ma = p_.get(field::StageMassSum{});
+    v.dm = p_.get(field::MassRate{});
+    v.masses = true;
+  }
+  return v;
 }
 
 // One stage of an explicit Runge-Kutta step: y = y0 + c_dt k with k the current
@@ -86,6 +98,10 @@ void Simulation<D>::allocate_stage_storage() {
     p_.allocate(field::StageVelocitySum{});
     p_.allocate(field::StageDensitySum{});
   }
+  if (p_.has(field::MassRate{})) {
+    p_.allocate(field::StageMass{});
+    if (scene_.integrator == TimeIntegrator::RK4) p_.allocate(field::StageMassSum{});
+  }
 }
 
 template <int D>
@@ -97,6 +113,7 @@ double Simulation<D>::step(double t_stop) {
   Kokkos::deep_copy(p_.get(field::StagePosition{}), p_.get(field::Position{}));
   Kokkos::deep_copy(p_.get(field::StageVelocity{}), p_.get(field::Velocity{}));
   Kokkos::deep_copy(p_.get(field::StageDensity{}), p_.get(field::Density{}));
+  if (p_.has(field::MassRate{})) Kokkos::deep_copy(p_.get(field::StageMass{}), p_.get(field::Mass{}));
 
   stage_time_ = t_;
   evaluate();  // k1 at y0, also the state the time step is computed from
@@ -207,6 +224,7 @@ void Simulation<D>::check_state(double dt) {
   Kokkos::deep_copy(p_.get(field::Position{}), p_.get(field::StagePosition{}));
   Kokkos::deep_copy(p_.get(field::Velocity{}), p_.get(field::StageVelocity{}));
   Kokkos::deep_copy(p_.get(field::Density{}), p_.get(field::StageDensity{}));
+  if (p_.has(field::MassRate{})) Kokkos::deep_copy(p_.get(field::Mass{}), p_.get(field::StageMass{}));
   domain_.halos_stale();
   throw BlowUp(comm().broadcast(m.str(), static_cast<int>(bad_rank)));
 }
