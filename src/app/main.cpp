@@ -74,9 +74,9 @@ int run_app(int argc, char** argv, int ranks, int rank, const std::string& no_de
   validate->add_option("--level", vopt.level, "quick (the CI subset) or full (the whole ladder)");
   validate->add_option("--out", vopt.out_dir, "output folder (default: out/validation)");
   validate->add_option("--flux", vopt.flux,
-                       "case (each case file's), delta_sph or riemann (Riemann-SPH with MUSCL): the fluid flux of every run (docs/case-file.md scheme.flux)");
+                       "case (each case file's), delta_sph, riemann (Riemann-SPH with MUSCL, Leduc's form) or riemann_vila (Vila's form with mass fluxes): the fluid flux of every run (docs/case-file.md scheme.flux)");
   validate->add_option("--transport", vopt.transport,
-                       "case (each case file's), lagrangian or shifting: the particle transport of every run (docs/case-file.md scheme.shifting)");
+                       "case (each case file's), lagrangian, shifting or ale (Oger's transport velocity; with --flux riemann or riemann_vila): the particle transport of every run (docs/case-file.md scheme.transport)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

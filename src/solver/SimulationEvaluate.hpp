@@ -56,7 +56,9 @@ FluxArgs<D> Simulation<D>::state_flux_args(int n) {
   a.m = p_.get(field::Mass{});
   a.du = p_.get(field::Acceleration{});
   a.drho = p_.get(field::DensityRate{});
-  if (p_.has(field::TransportCorrection{})) a.du0 = p_.get(field::TransportCorrection{});
+  // the transport velocity enters the fluxes in Vila's ALE form only (Leduc's form moves the
+  // particles with it and nothing else, 2.101)
+  if (p_.has(field::TransportCorrection{}) && p_.has(field::MassRate{})) a.du0 = p_.get(field::TransportCorrection{});
   if (p_.has(field::MassRate{})) a.dm = p_.get(field::MassRate{});
   // the lattice factor scales the plain Morris term; the consistent one has its own weights
   a.nu = scene_.viscous_term == ViscousTerm::Morris && !uses_consistent_laplacian(scene_) ? scene_.nu * scheme_.morris_factor : scene_.nu;
