@@ -170,9 +170,11 @@ void Simulation<D>::evaluate(const bool later_stage) {
   // scheme.transport: ale: the transport velocity's correction (2.113) at this stage, with the
   // free-surface flags (4.86)-(4.87) of the step's first stage
   if (scheme_.transport_velocity) {
-    if (!later_stage && p_.has(field::FreeSurface{})) {
-      for (const LevelSpan<D>& L : levels)
-        if (L.active_end > L.first) scheme_.free_surface(pass_context(L));
+    if (p_.has(field::FreeSurface{})) {
+      if (!later_stage)
+        for (const LevelSpan<D>& L : levels)
+          if (L.active_end > L.first) scheme_.free_surface(pass_context(L));
+      // at every stage: a list rebuilt since may have made new halo copies
       domain_.refresh(p_, field::FreeSurface{});
     }
     for (const LevelSpan<D>& L : levels)
