@@ -32,6 +32,7 @@ std::vector<Vec<D>> brute_force_correction(const Simulation<D>& sim, double L) {
   const Scene& s = sim.scene();
   const auto x = host(sim, field::Position{});
   const auto u = host(sim, field::Velocity{});
+  const auto m = host(sim, field::Mass{});
   const int n = static_cast<int>(sim.size());
   const double R = s.R(), R_d = 2.0 * s.dx, U = s.ale_mach * s.c0;
   std::vector<Vec<D>> out(n, Vec<D>::zero());
@@ -44,7 +45,7 @@ std::vector<Vec<D>> brute_force_correction(const Simulation<D>& sim, double L) {
         for (int k = 0; k < D; ++k) xij[k] = x(i, k) - x(j, k) - L * std::round((x(i, k) - x(j, k)) / L);
         const double r = std::sqrt(norm2(xij));
         if (r >= R_d) continue;
-        nh += (std::pow(s.dx, D) * W.derivative(r) / r) * xij;
+        nh += (m(j) / s.rho0 * W.derivative(r) / r) * xij;
       }
       nh *= R;
       double speed = 0;

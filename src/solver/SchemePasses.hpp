@@ -71,15 +71,13 @@ template <int D, class K, bool Walls>
 void transport_velocity(const PassContext<D>& c) {
   const double R_d = c.R < 2.0 * c.dx ? c.R : 2.0 * c.dx;
   const K W(c.R), W_d(R_d);
-  double omega0 = 1.0;
-  for (int k = 0; k < D; ++k) omega0 *= c.dx;
   const auto gamma = Walls ? c.gamma : field_view_t<field::ShepardGamma, D>();
   auto launch = [&](auto pass) { Kokkos::parallel_for("ondine::TransportVelocity", range(c), pass); };
   if (c.free_surface.is_allocated())
-    launch(OgerVelocityLaw<D, K, Walls, true>{c.list, c.box, W, W_d, c.R, c.R * c.R, R_d * R_d, omega0, c.u_char, c.x, c.u, c.rho, c.m,
+    launch(OgerVelocityLaw<D, K, Walls, true>{c.list, c.box, W, W_d, c.R, c.R * c.R, R_d * R_d, c.rho0, c.u_char, c.x, c.u, c.rho, c.m,
                                               c.du0, c.wall, c.wall_cells, gamma, c.free_surface});
   else
-    launch(OgerVelocityLaw<D, K, Walls>{c.list, c.box, W, W_d, c.R, c.R * c.R, R_d * R_d, omega0, c.u_char, c.x, c.u, c.rho, c.m, c.du0,
+    launch(OgerVelocityLaw<D, K, Walls>{c.list, c.box, W, W_d, c.R, c.R * c.R, R_d * R_d, c.rho0, c.u_char, c.x, c.u, c.rho, c.m, c.du0,
                                         c.wall, c.wall_cells, gamma, {}});
 }
 

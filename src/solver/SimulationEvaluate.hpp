@@ -56,8 +56,8 @@ FluxArgs<D> Simulation<D>::state_flux_args(int n) {
   a.m = p_.get(field::Mass{});
   a.du = p_.get(field::Acceleration{});
   a.drho = p_.get(field::DensityRate{});
-  // the transport velocity enters the fluxes in Vila's ALE form only (Leduc's form moves the
-  // particles with it and nothing else, 2.101)
+  // the transport velocity enters the pair fluxes in Vila's ALE form only (Leduc's form moves
+  // the particles with it and nothing else, 2.101)
   if (p_.has(field::TransportCorrection{}) && p_.has(field::MassRate{})) a.du0 = p_.get(field::TransportCorrection{});
   if (p_.has(field::MassRate{})) a.dm = p_.get(field::MassRate{});
   // the lattice factor scales the plain Morris term; the consistent one has its own weights

@@ -20,7 +20,6 @@ namespace detail {
 template <int D, class T>
 T make_wall_term(const WallFluxArgs<D>& a) {
   if constexpr (std::is_same<T, wall::PressureFlux>::value) return T{a.fluid.P_min};
-  else if constexpr (std::is_same<T, wall::Continuity<D>>::value) return T{a.fluid.du0};  // set with Vila's ALE form only
   else if constexpr (std::is_same<T, wall::NoSlipViscosity<D, true>>::value || std::is_same<T, wall::NoSlipViscosity<D, false>>::value)
     return T{a.nu, 0.05 * a.fluid.R, a.wall.no_slip, a.weights};
   else return T{};
@@ -40,10 +39,10 @@ template <int D, class Kernel>
 WallFluxFunction<D> select_wall_flux(const Scene& s) {
   using detail::run_wall_flux;
   if (uses_consistent_laplacian(s))
-    return &run_wall_flux<D, Kernel, wall::PressureFlux, wall::Continuity<D>, wall::NoSlipViscosity<D, true>>;
+    return &run_wall_flux<D, Kernel, wall::PressureFlux, wall::Continuity, wall::NoSlipViscosity<D, true>>;
   if (s.viscous_term != ViscousTerm::None)
-    return &run_wall_flux<D, Kernel, wall::PressureFlux, wall::Continuity<D>, wall::NoSlipViscosity<D, false>>;
-  return &run_wall_flux<D, Kernel, wall::PressureFlux, wall::Continuity<D>>;
+    return &run_wall_flux<D, Kernel, wall::PressureFlux, wall::Continuity, wall::NoSlipViscosity<D, false>>;
+  return &run_wall_flux<D, Kernel, wall::PressureFlux, wall::Continuity>;
 }
 
 }  // namespace ondine
