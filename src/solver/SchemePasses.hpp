@@ -72,13 +72,14 @@ void transport_velocity(const PassContext<D>& c) {
   const double R_d = c.R < 2.0 * c.dx ? c.R : 2.0 * c.dx;
   const K W(c.R), W_d(R_d);
   const auto gamma = Walls ? c.gamma : field_view_t<field::ShepardGamma, D>();
+  const double eps2 = (0.1 / c.R) * (0.1 / c.R);
   auto launch = [&](auto pass) { Kokkos::parallel_for("ondine::TransportVelocity", range(c), pass); };
   if (c.free_surface.is_allocated())
     launch(OgerVelocityLaw<D, K, Walls, true>{c.list, c.box, W, W_d, c.R, c.R * c.R, R_d * R_d, c.rho0, c.u_char, c.x, c.u, c.rho, c.m,
-                                              c.du0, c.wall, c.wall_cells, gamma, c.free_surface});
+                                              c.du0, c.wall, c.wall_cells, gamma, c.free_surface, eps2});
   else
     launch(OgerVelocityLaw<D, K, Walls>{c.list, c.box, W, W_d, c.R, c.R * c.R, R_d * R_d, c.rho0, c.u_char, c.x, c.u, c.rho, c.m, c.du0,
-                                        c.wall, c.wall_cells, gamma, {}});
+                                        c.wall, c.wall_cells, gamma, {}, eps2});
 }
 
 // max_i kappa_i of the no-slip wall term (4.85) (kernels/WallFluxPass.hpp)
