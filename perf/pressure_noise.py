@@ -4,7 +4,8 @@
 For each scheme (delta_sph as the case files say; riemann: Riemann-SPH with MUSCL, Leduc's form;
 each also with particle shifting, _shifting; riemann_ale: Leduc's form moved by Oger's transport
 velocity (2.101); riemann_vila: Vila's form with mass fluxes (2.84-2.89), Lagrangian;
-riemann_vila_ale: Vila's ALE form with Oger's transport velocity):
+riemann_vila_ale: Vila's ALE form with Oger's transport velocity; _free: with
+scheme.ale.cut_supports: free):
   * hydrostatic_tank_2d run to T_TANK s (20 by default, the shipped 0.5 s damping kept), the
     bottom probe sampled every 2 ms;
   * dam_break_impact_2d (0.35 s: the surge hits the right wall at about 0.2 s), the right-wall
@@ -42,7 +43,9 @@ VILA = RIEMANN + ["scheme.riemann.variant=vila"]
 SCHEMES = {"delta_sph": [], "delta_sph_shifting": ["scheme.shifting=true"],
            "riemann": RIEMANN, "riemann_shifting": RIEMANN + ["scheme.shifting=true"],
            "riemann_ale": RIEMANN + ["scheme.transport=ale"],
-           "riemann_vila": VILA, "riemann_vila_ale": VILA + ["scheme.transport=ale"]}
+           "riemann_ale_free": RIEMANN + ["scheme.transport=ale", "scheme.ale.cut_supports=free"],
+           "riemann_vila": VILA, "riemann_vila_ale": VILA + ["scheme.transport=ale"],
+           "riemann_vila_ale_free": VILA + ["scheme.transport=ale", "scheme.ale.cut_supports=free"]}
 for s in args.schemes.split():
     if s not in SCHEMES:
         sys.exit("perf/pressure_noise.py: unknown scheme '%s' (expected some of %s)" % (s, " ".join(SCHEMES)))

@@ -239,6 +239,13 @@ TEST_CASE("scheme.transport: ale and scheme.riemann.variant: vila are read; the 
   CHECK_THAT(case_refusal("dam_break_2d.yaml", {"scheme.flux=riemann", "scheme.delta_sph=0", "scheme.density_gradient=stage",
                                                 "scheme.transport=ale", "scheme.ale.mach=2"}),
              Contains("scheme.ale.mach") && Contains("0 < Ma <= 1"));
+  CHECK_FALSE(load_case(src + "/cases/dam_break_2d.yaml", {"scheme.flux=riemann", "scheme.delta_sph=0", "scheme.density_gradient=stage",
+                                                            "scheme.transport=ale", "scheme.ale.cut_supports=free"})
+                  .ale_tangential_cut);
+  CHECK(s.ale_tangential_cut);
+  CHECK_THAT(case_refusal("dam_break_2d.yaml", {"scheme.flux=riemann", "scheme.delta_sph=0", "scheme.density_gradient=stage",
+                                                "scheme.transport=ale", "scheme.ale.cut_supports=none"}),
+             Contains("scheme.ale.cut_supports") && Contains("tangential"));
   CHECK_THAT(case_refusal("dam_break_2d.yaml", {"scheme.flux=riemann", "scheme.delta_sph=0", "scheme.riemann.variant=godunov"}),
              Contains("scheme.riemann.variant") && Contains("vila"));
 }

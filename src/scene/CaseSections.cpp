@@ -166,7 +166,9 @@ void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
     // scheme.ale: the transport-velocity law's characteristic velocity U_char = Ma c0 (2.113)
     if (const YAML::Node a = sc["ale"]) {
       if (!s.ale) r.fail(a, "scheme.ale", "is read with scheme.transport: ale only");
-      r.only_keys(a, "scheme.ale", {"mach"});
+      r.only_keys(a, "scheme.ale", {"mach", "cut_supports"});
+      if (a["cut_supports"])
+        s.ale_tangential_cut = r.word(a["cut_supports"], "scheme.ale.cut_supports", {"tangential", "free"}) == "tangential";
       if (a["mach"]) {
         s.ale_mach = r.non_negative(a["mach"], "scheme.ale.mach", " (U_char / c0 of thesis 2.113)");
         if (s.ale_mach <= 0 || s.ale_mach > 1) r.fail(a["mach"], "scheme.ale.mach", "expected 0 < Ma <= 1 (U_char = Ma c0 of thesis 2.113)");

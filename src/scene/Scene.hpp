@@ -157,6 +157,7 @@ struct Scene {
   bool shifting = false;              // particle shifting (2.107)-(2.111) (scheme.transport: shifting)
   bool ale = false;                   // the transport-velocity law of Oger et al. (2.112)-(2.115) (scheme.transport: ale)
   double ale_mach = 0.1;              // U_char = Ma c0 of (2.113)
+  bool ale_tangential_cut = true;     // scheme.ale.cut_supports: tangential (kernels/OgerVelocityLaw.hpp); false: free
   bool consistent_laplacian = true;   // Morris scenes with no-slip walls: the consistent Laplacian (false: the thesis' operator)
   bool renormalised_continuity = false;  // drho/dt from the renormalised divergence (2.42-2.44, 4.86; kernels/RenormalisedContinuity.hpp)
   bool wall_velocity_reconstruction = false;  // MUSCL state of u at NFM wall points (4.30; kernels/WallVelocityState.hpp)

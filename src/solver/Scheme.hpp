@@ -42,6 +42,7 @@ struct PassContext {
   field_view_t<field::FreeSurface, D> free_surface;
   field_view_t<field::TransportCorrection, D> du0;  // scheme.transport: ale, written by transport_velocity
   double u_char = 0;                                  // U_char = Ma c0 of (2.113)
+  bool ale_project = true;                            // scheme.ale.cut_supports: tangential
   // walls
   WallPoints<D> wall;
   WallFacets<D> facets;  // segments (2D) or triangles (3D)

@@ -76,10 +76,11 @@ void transport_velocity(const PassContext<D>& c) {
   auto launch = [&](auto pass) { Kokkos::parallel_for("ondine::TransportVelocity", range(c), pass); };
   if (c.free_surface.is_allocated())
     launch(OgerVelocityLaw<D, K, Walls, true>{c.list, c.box, W, W_d, c.R, c.R * c.R, R_d * R_d, c.rho0, c.u_char, c.x, c.u, c.rho, c.m,
-                                              c.du0, c.wall, c.wall_cells, gamma, c.free_surface, eps2});
+                                              c.du0, c.wall, c.wall_cells, gamma, c.free_surface, eps2,
+                                              c.ale_project});
   else
     launch(OgerVelocityLaw<D, K, Walls>{c.list, c.box, W, W_d, c.R, c.R * c.R, R_d * R_d, c.rho0, c.u_char, c.x, c.u, c.rho, c.m, c.du0,
-                                        c.wall, c.wall_cells, gamma, {}, eps2});
+                                        c.wall, c.wall_cells, gamma, {}, eps2, c.ale_project});
 }
 
 // max_i kappa_i of the no-slip wall term (4.85) (kernels/WallFluxPass.hpp)

@@ -109,6 +109,7 @@ PassContext<D> Simulation<D>::pass_context(const LevelSpan<D>& L) const {
   take(c.free_surface, field::FreeSurface{});
   take(c.du0, field::TransportCorrection{});
   c.u_char = scene_.ale_mach * scene_.c0;
+  c.ale_project = scene_.ale_tangential_cut;
   c.wall = L.wall;
   c.facets = walls_.facets();
   c.facet_cells = walls_.facet_cells();
