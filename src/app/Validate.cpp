@@ -189,11 +189,12 @@ bool options_known(const ValidateOptions& opt) {
     std::fprintf(stderr, "ondine validate: --flux must be case, delta_sph, riemann or riemann_vila, got '%s'\n", opt.flux.c_str());
     return false;
   }
-  if (opt.transport != "case" && opt.transport != "lagrangian" && opt.transport != "shifting" && opt.transport != "ale") {
-    std::fprintf(stderr, "ondine validate: --transport must be case, lagrangian, shifting or ale, got '%s'\n", opt.transport.c_str());
+  if (opt.transport != "case" && opt.transport != "lagrangian" && opt.transport != "shifting" && opt.transport != "ale" &&
+      opt.transport != "ale_free") {
+    std::fprintf(stderr, "ondine validate: --transport must be case, lagrangian, shifting, ale or ale_free, got '%s'\n", opt.transport.c_str());
     return false;
   }
-  if (opt.transport == "ale" && opt.flux != "riemann" && opt.flux != "riemann_vila") {
+  if ((opt.transport == "ale" || opt.transport == "ale_free") && opt.flux != "riemann" && opt.flux != "riemann_vila") {
     std::fprintf(stderr, "ondine validate: --transport ale needs --flux riemann or riemann_vila (the ALE transport is built on Riemann-SPH)\n");
     return false;
   }
@@ -207,7 +208,8 @@ bool options_known(const ValidateOptions& opt) {
 // --flux riemann: Riemann-SPH with MUSCL in place of delta-SPH, every stage's gradients, and the
 // thesis' acoustic CFL 0.375 (the dam-break case's 0.75 is beyond Riemann-SPH's stable step);
 // riemann_vila: the same in Vila's form with mass fluxes (2.84-2.89); --flux delta_sph: the
-// centred flux (the case's delta-SPH and viscosities); --transport: scheme.transport
+// centred flux (the case's delta-SPH and viscosities); --transport: scheme.transport (ale_free:
+// ale with scheme.ale.cut_supports: free)
 std::vector<std::string> scheme_sets(const ValidateOptions& opt) {
   std::vector<std::string> s;
   if (opt.flux == "riemann" || opt.flux == "riemann_vila")
@@ -216,7 +218,8 @@ std::vector<std::string> scheme_sets(const ValidateOptions& opt) {
   if (opt.flux == "delta_sph") s = {"scheme.flux=delta_sph"};
   if (opt.transport != "case") {
     s.push_back(opt.transport == "shifting" ? "scheme.shifting=true" : "scheme.shifting=false");
-    if (opt.transport == "ale") s.push_back("scheme.transport=ale");
+    if (opt.transport == "ale" || opt.transport == "ale_free") s.push_back("scheme.transport=ale");
+    if (opt.transport == "ale_free") s.push_back("scheme.ale.cut_supports=free");
   }
   return s;
 }

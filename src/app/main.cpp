@@ -76,7 +76,7 @@ int run_app(int argc, char** argv, int ranks, int rank, const std::string& no_de
   validate->add_option("--flux", vopt.flux,
                        "case (each case file's), delta_sph, riemann (Riemann-SPH with MUSCL, Leduc's form) or riemann_vila (Vila's form with mass fluxes): the fluid flux of every run (docs/case-file.md scheme.flux)");
   validate->add_option("--transport", vopt.transport,
-                       "case (each case file's), lagrangian, shifting or ale (Oger's transport velocity; with --flux riemann or riemann_vila): the particle transport of every run (docs/case-file.md scheme.transport)");
+                       "case (each case file's), lagrangian, shifting, ale (Oger's transport velocity; with --flux riemann or riemann_vila) or ale_free (the same with scheme.ale.cut_supports: free): the particle transport of every run (docs/case-file.md scheme.transport)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
