@@ -66,26 +66,25 @@ struct OgerVelocityLaw {
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<D> xi = load<D>(x, i);
     Vec<D> nhat = Vec<D>::zero();
-    Vec<D> v = Vec<D>::zero();   // Surface: sum_P w_j grad_i W_ij + sum_S s_q n_q W_iq (4.87)
     Mat<D> M = Mat<D>::zero();   // Surface: the NFM matrix (4.86), up to 1/gamma
     Vec<D> toward = Vec<D>::zero();  // Surface: sum of x_s - x_i over the surface particles s within R_d
     const bool on_surface = Surface && surface(i) > 0.5;
-    Vec<D> g = Vec<D>::zero();
+    Vec<D> g = Vec<D>::zero();   // sum_P w_j grad_i W_ij, the truncation vector
     for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>& xij, const double r) {
-      g += (m(j) / rho(j) * W.derivative(r) / r) * xij;
+      const double w = m(j) / rho(j);
+      const Vec<D> gradW = (W.derivative(r) / r) * xij;
+      g += w * gradW;
       if (r * r < R_d2) {
         nhat += (m(j) / rho0 * W_d.derivative(r) / r) * xij;
         if constexpr (Surface)
           if (surface(j) > 0.5) toward -= xij;
       }
       if constexpr (Surface) {
-        const double w = m(j) / rho(j);
-        const Vec<D> gradW = (W.derivative(r) / r) * xij;
-        v += w * gradW;
         for (int a = 0; a < D; ++a)
           for (int b = 0; b < D; ++b) M.a[a][b] -= w * xij[a] * gradW[b];
       }
     });
+    Vec<D> v = g;  // Surface: g + sum_S s_q n_q W_iq, the vector of (4.87)
     double inv_gamma = 1.0;
     if constexpr (Walls) {
       inv_gamma = 1.0 / gamma(i);

@@ -37,13 +37,17 @@ std::vector<Vec<D>> brute_force_correction(const Simulation<D>& sim, double L, i
   const int n = static_cast<int>(sim.size());
   const double R = s.R(), R_d = 2.0 * s.dx, U = s.ale_mach * s.c0;
   std::vector<Vec<D>> out(n, Vec<D>::zero());
+  const auto min_image = [&](int i, int j) {  // x_i - x_j in the periodic box of side L
+    Vec<D> xij;
+    for (int k = 0; k < D; ++k) xij[k] = x(i, k) - x(j, k) - L * std::round((x(i, k) - x(j, k)) / L);
+    return xij;
+  };
   with_kernel<D>(s.kernel, R_d, [&](auto W) {
     for (int i = 0; i < n; ++i) {
       Vec<D> nh = Vec<D>::zero();
       for (int j = 0; j < n; ++j) {
         if (j == i) continue;
-        Vec<D> xij;
-        for (int k = 0; k < D; ++k) xij[k] = x(i, k) - x(j, k) - L * std::round((x(i, k) - x(j, k)) / L);
+        const Vec<D> xij = min_image(i, j);
         const double r = std::sqrt(norm2(xij));
         if (r >= R_d) continue;
         nh += (m(j) / s.rho0 * W.derivative(r) / r) * xij;
@@ -64,8 +68,7 @@ std::vector<Vec<D>> brute_force_correction(const Simulation<D>& sim, double L, i
       Vec<D> g = Vec<D>::zero();
       for (int j = 0; j < n; ++j) {
         if (j == i) continue;
-        Vec<D> xij;
-        for (int k = 0; k < D; ++k) xij[k] = x(i, k) - x(j, k) - L * std::round((x(i, k) - x(j, k)) / L);
+        const Vec<D> xij = min_image(i, j);
         const double r = std::sqrt(norm2(xij));
         if (r >= R) continue;
         g += (m(j) / rho(j) * W.derivative(r) / r) * xij;

@@ -174,6 +174,9 @@ std::vector<const ValidationCase*> chosen_cases(const ValidateOptions& opt) {
 }
 
 // false (said on stderr) for an unknown --case or --level
+// --flux riemann or riemann_vila: a Riemann-SPH flux
+bool riemann_flux(const ValidateOptions& opt) { return opt.flux == "riemann" || opt.flux == "riemann_vila"; }
+
 bool options_known(const ValidateOptions& opt) {
   for (const std::string& n : opt.cases) {
     bool known = n == "stability" || n == "all" || n == "apr";
@@ -194,7 +197,7 @@ bool options_known(const ValidateOptions& opt) {
     std::fprintf(stderr, "ondine validate: --transport must be case, lagrangian, shifting, ale or ale_free, got '%s'\n", opt.transport.c_str());
     return false;
   }
-  if ((opt.transport == "ale" || opt.transport == "ale_free") && opt.flux != "riemann" && opt.flux != "riemann_vila") {
+  if ((opt.transport == "ale" || opt.transport == "ale_free") && !riemann_flux(opt)) {
     std::fprintf(stderr, "ondine validate: --transport ale needs --flux riemann or riemann_vila (the ALE transport is built on Riemann-SPH)\n");
     return false;
   }
@@ -212,7 +215,7 @@ bool options_known(const ValidateOptions& opt) {
 // ale with scheme.ale.cut_supports: free)
 std::vector<std::string> scheme_sets(const ValidateOptions& opt) {
   std::vector<std::string> s;
-  if (opt.flux == "riemann" || opt.flux == "riemann_vila")
+  if (riemann_flux(opt))
     s = {"scheme.flux=riemann", "scheme.delta_sph=0", "scheme.density_gradient=stage", "scheme.cfl.acoustic=0.375"};
   if (opt.flux == "riemann_vila") s.push_back("scheme.riemann.variant=vila");
   if (opt.flux == "delta_sph") s = {"scheme.flux=delta_sph"};
@@ -230,9 +233,8 @@ std::vector<std::string> rung_sets(const ValidateOptions& opt, const ValidationC
   std::vector<std::string> sets = scheme_sets(opt);
   // Riemann-SPH takes its density rate from the Riemann velocity (2.92): an entry's renormalised
   // continuity (the c0 = 1480 dam break's) is the centred flux's fix and is left out
-  const bool riemann = opt.flux == "riemann" || opt.flux == "riemann_vila";
   for (const std::string& e : c.sets)
-    if (!(riemann && e.rfind("scheme.renormalised_continuity=", 0) == 0)) sets.push_back(e);
+    if (!(riemann_flux(opt) && e.rfind("scheme.renormalised_continuity=", 0) == 0)) sets.push_back(e);
   if (opt.level != "full") sets.insert(sets.end(), c.quick_sets.begin(), c.quick_sets.end());
   std::ostringstream dx;
   dx.precision(17);
