@@ -18,12 +18,17 @@ struct TaitEos {
   KOKKOS_INLINE_FUNCTION double sound_speed(double rho) const {
     return c0 * kmath::pow(rho / rho0, 0.5 * (gamma - 1.0));
   }
+  // the inverse of pressure()
+  KOKKOS_INLINE_FUNCTION double density(double p) const {
+    return rho0 * kmath::pow(1.0 + gamma * (p - p_b) / (rho0 * c0 * c0), 1.0 / gamma);
+  }
 };
 
 struct LinearEos {
   double rho0, c0, p_b;
   KOKKOS_INLINE_FUNCTION double pressure(double rho) const { return c0 * c0 * (rho - rho0) + p_b; }
   KOKKOS_INLINE_FUNCTION double sound_speed(double) const { return c0; }
+  KOKKOS_INLINE_FUNCTION double density(double p) const { return rho0 + (p - p_b) / (c0 * c0); }
 };
 
 // P_i = EOS(rho_i) for all particles.

@@ -56,6 +56,9 @@ ONDINE_FIELD(AprLevel, "level", int, false);
 ONDINE_FIELD(AprBirthLevel, "birth_level", int, false);
 ONDINE_FIELD(AprGuard, "guard", int, false);
 ONDINE_FIELD(AprMother, "mother", int, false);
+// Open boundaries (kernels/OpenBoundary.hpp): 0 for a fluid particle, b + 1 for a particle of
+// the buffer layer of open boundary b (its state imposed or extrapolated, not integrated).
+ONDINE_FIELD(OpenRole, "open_role", int, false);
 // global id of a daughter's mother (-1 at level 0): a mother's daughters leave with it
 ONDINE_FIELD_(AprParent, "parent_id", std::int64_t, false, false);
 ONDINE_FIELD_(StagePosition, "stage_position", double, true, false);

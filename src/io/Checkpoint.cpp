@@ -37,6 +37,11 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, std::i
     f.attribute("refinement_checksum", a.checksum);
     for (const std::string& name : checkpoint_refinement_fields()) names.push_back(name);
   }
+  if (h.open.present) {
+    f.attribute("open_next_id", h.open.next_id);
+    f.attribute("open_state", h.open.state);
+    names.push_back("open_role");
+  }
   for (const std::string& name : names) {
     const auto it = fields.find(name);
     if (it == fields.end()) throw std::logic_error("write_checkpoint: field " + name + " not given");
@@ -94,6 +99,14 @@ CheckpointSlice read_checkpoint(const std::string& path, const Communicator& com
                                 "birth_level, level, guard, mother and parent_id)");
         names.push_back(name);
       }
+    }
+    if (r.has("open_next_id")) {
+      // written by a run with open boundaries
+      h.open.present = true;
+      h.open.next_id = r.attribute_int("open_next_id");
+      h.open.state = r.attribute_doubles("open_state");
+      if (!r.has("open_role")) throw CheckpointError(path + ": dataset 'open_role' is missing (the checkpoint of a run with open boundaries holds it)");
+      names.push_back("open_role");
     }
     const std::int64_t first = h.particles * comm.rank() / comm.size();
     s.rows = h.particles * (comm.rank() + 1) / comm.size() - first;

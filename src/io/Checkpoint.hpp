@@ -40,6 +40,14 @@ struct CheckpointRefinement {
   std::uint64_t checksum = 0;        // of the APR fields with the ids (kernels/StateHash.hpp)
 };
 
+// The open boundaries' state (solver/OpenBoundaries.hpp): the next global id, the counters and
+// the facets' reference states; with it the checkpoint holds the field open_role.
+struct CheckpointOpen {
+  bool present = false;
+  std::int64_t next_id = 0;
+  std::vector<double> state;  // OpenBoundaries::save's layout
+};
+
 struct CheckpointHeader {
   std::string case_name;
   int dimension = 0;
@@ -53,6 +61,7 @@ struct CheckpointHeader {
   std::uint64_t checksum = 0;  // of the state fields (kernels/StateHash.hpp)
   std::int64_t wall_corrections = 0;  // impermeability corrections since t = 0, all ranks (kernels/WallImpermeability.hpp)
   CheckpointRefinement refinement;
+  CheckpointOpen open;
 };
 
 // The state fields, in this order, with their components (D for vectors).

@@ -21,7 +21,7 @@ class ParticleSet {
                             field::Mass, field::GlobalId, field::Acceleration, field::DensityRate,
                             field::DensityGradient, field::VelocityGradientX, field::VelocityGradientY,
                             field::VelocityGradientZ, field::ShepardGamma, field::FreeSurface,
-                            field::TransportCorrection, field::MassRate,
+                            field::TransportCorrection, field::MassRate, field::OpenRole,
                             field::AprLevel, field::AprBirthLevel, field::AprGuard, field::AprMother, field::AprParent,
                             field::StagePosition, field::StageVelocity, field::StageDensity,
                             field::StagePositionSum, field::StageVelocitySum, field::StageDensitySum,

@@ -39,7 +39,7 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
 
   r.only_keys(root, "", {"name", "dimension", "domain", "fluid", "discretisation", "fluid_blocks", "walls", "forces",
                          "scheme", "time", "probes", "wave_gauges", "reference", "parallel", "checkpoint",
-                         "refinement"});
+                         "refinement", "open_boundaries"});
   Scene s;
   s.source_file = path;
   read_name_and_dimension(r, root, path, s);
@@ -59,6 +59,7 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
   read_wave_gauges(r, root, s);
   read_reference(r, root, s);
   read_refinement(r, root, s);
+  read_open_boundaries(r, root, s);
   check_memory(r, root, s);
   return s;
 }

@@ -55,4 +55,7 @@ void read_reference(const Reader& r, YAML::Node& root, Scene& s);
 // CaseRefinement.cpp: adaptive particle refinement zones
 void read_refinement(const Reader& r, YAML::Node& root, Scene& s);
 
+// CaseOpenBoundaries.cpp: inlets and outlets (after the scheme, the sound speed and the zones)
+void read_open_boundaries(const Reader& r, YAML::Node& root, Scene& s);
+
 }  // namespace ondine::case_file

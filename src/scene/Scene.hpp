@@ -114,6 +114,32 @@ struct RefinementZone {
   int every = 1;           // criterion: steps between re-centrings
 };
 
+// An open boundary (docs/case-file.md, "Open boundaries"): a plane normal to an axis with a
+// buffer layer of `layers` dx on its outer side. Inlet: the buffer particles move with the
+// imposed velocity and a particle that crosses the plane into the fluid is replaced by a new
+// one `layers` dx upstream. Outlet: a fluid particle that crosses the plane joins the buffer,
+// whose state is extrapolated from the fluid, and is removed at the buffer's outer face. The
+// buffer state takes the incoming acoustic invariant from a reference state and the outgoing
+// one from the fluid (non_reflecting), or imposes velocity (inlet) or pressure (outlet).
+constexpr int kMaxOpenBoundaries = 8;
+enum class OpenKind { Inlet, Outlet };
+enum class InletProfile { Uniform, Parabolic };
+struct OpenBoundary {
+  std::string name;
+  OpenKind kind = OpenKind::Inlet;
+  int axis = 0;          // the plane is normal to this axis
+  int sign = 1;          // +1: the fluid lies at larger coordinates (the normal into the fluid is +axis)
+  double position = 0;   // the plane's coordinate along the axis (m)
+  int layers = 0;        // buffer thickness in dx (at least R / dx)
+  Vec3 velocity{0, 0, 0};  // inlet: the imposed velocity (the mean with a parabolic profile), m/s
+  InletProfile profile = InletProfile::Uniform;
+  int profile_axis = 1;  // parabolic: the axis across which u(s) = 6 U (s - lo)(hi - s) / (hi - lo)^2
+  double span_lo = 0, span_hi = 0;
+  double pressure = 0;   // outlet: the imposed mean pressure (Pa)
+  bool non_reflecting = true;
+  double relaxation_time = 0;  // s: the reference state's filter time (resolved: never 0 after parsing)
+};
+
 struct Scene {
   std::string name;         // case name (output folder name)
   std::string source_file;  // the YAML file it came from
@@ -191,6 +217,8 @@ struct Scene {
   }
   std::vector<WaveGauge> wave_gauges;
   Reference reference;
+  // inlets and outlets (empty: a closed or periodic domain, no open-boundary field or pass)
+  std::vector<OpenBoundary> open_boundaries;
 
   // distributed runs: rebalance when tau = min work / max work (5.30) falls below this
   double rebalance_threshold = 0.9;

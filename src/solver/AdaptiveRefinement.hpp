@@ -19,6 +19,7 @@
 #include "kernels/apr/InteractionLists.hpp"
 #include "kernels/apr/Refinement.hpp"
 #include "parallel/Communicator.hpp"
+#include "parallel/SortedIds.hpp"
 #include "io/Checkpoint.hpp"
 #include "particles/ParticleSet.hpp"
 #include "scene/Scene.hpp"
@@ -354,18 +355,6 @@ class AdaptiveRefinement {
   }
 
 private:
-  // the values of `local` on every rank, sorted, on the device
-  static Kokkos::View<std::int64_t*, MemSpace> sorted_on_every_rank(const Kokkos::View<std::int64_t*, MemSpace>& local,
-                                                                     const Communicator& comm, const std::string& label) {
-    std::vector<std::int64_t> mine(local.extent(0));
-    Kokkos::deep_copy(Kokkos::View<std::int64_t*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(mine.data(), mine.size()), local);
-    std::vector<std::int64_t> all = comm.gather_all(mine);
-    std::sort(all.begin(), all.end());
-    Kokkos::View<std::int64_t*, MemSpace> out(label, all.size());
-    Kokkos::deep_copy(out, Kokkos::View<const std::int64_t*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(all.data(), all.size()));
-    return out;
-  }
-
   // zone boxes at their current offsets (a nested zone moves with its outermost parent)
   void place_zones() {
     for (std::size_t z = 0; z < scene_zones_.size(); ++z) {

@@ -34,7 +34,17 @@ class RunRecorder {
     for (const WaveGauge& g : scene.wave_gauges) waves_.text() << "," << g.name << ".elevation";
     waves_.text() << "\n";
     diag_.text() << "time,step,dt,mass,momentum_x,momentum_y" << (D == 3 ? ",momentum_z" : "")
-                 << ",kinetic_energy,max_speed,rho_min,rho_max,outside_domain,balance\n";
+                 << ",kinetic_energy,max_speed,rho_min,rho_max,outside_domain,balance";
+    // open boundaries: the fluid region's mass, and per boundary the masses that crossed its
+    // plane into and out of the fluid since t = 0 and the net flux into the fluid over the
+    // interval since the previous row (kg/s; per metre of span in 2D)
+    if (sim.open_on()) {
+      diag_.text() << ",fluid_mass";
+      for (const OpenFlux& f : sim.open_boundaries().fluxes())
+        diag_.text() << "," << f.name << ".mass_in," << f.name << ".mass_out," << f.name << ".mass_flux";
+      open_previous(sim);
+    }
+    diag_.text() << "\n";
     probes_.text() << "time,step";
     for (const Probe& p : scene.probes) {
       probes_.text() << "," << p.name << ".pressure," << p.name << ".density";
@@ -110,7 +120,18 @@ class RunRecorder {
     diag_.text() << sim.time() << "," << sim.steps() << "," << last_dt << "," << d.mass;
     for (int k = 0; k < D; ++k) diag_.text() << "," << d.momentum[k];
     diag_.text() << "," << d.kinetic_energy << "," << d.max_speed << "," << d.rho_min << "," << d.rho_max << "," << d.outside_domain
-                 << "," << sim.balance() << "\n";
+                 << "," << sim.balance();
+    if (sim.open_on()) {
+      diag_.text() << "," << d.fluid_mass;
+      const auto& fl = sim.open_boundaries().fluxes();
+      const double span = sim.time() - open_t_;
+      for (std::size_t b = 0; b < fl.size(); ++b) {
+        const double net = (fl[b].mass_in - fl[b].mass_out) - (open_in_[b] - open_out_[b]);
+        diag_.text() << "," << fl[b].mass_in << "," << fl[b].mass_out << "," << (span > 0 ? net / span : 0.0);
+      }
+      open_previous(sim);
+    }
+    diag_.text() << "\n";
     if (!scene_.probes.empty()) {
       const auto samples = sim.sample_probes();
       for (std::size_t k = 0; k < samples.size(); ++k) keep_sensor(scene_.probes[k].name, sim.time(), samples[k].pressure);
@@ -168,6 +189,16 @@ class RunRecorder {
 
  private:
   bool dam_break() const { return scene_.reference.kind == ReferenceKind::MartinMoyce; }
+  // the open boundaries' counters at the last row (for the flux over an interval)
+  void open_previous(const Simulation<D>& sim) {
+    open_t_ = sim.time();
+    open_in_.clear();
+    open_out_.clear();
+    for (const OpenFlux& f : sim.open_boundaries().fluxes()) {
+      open_in_.push_back(f.mass_in);
+      open_out_.push_back(f.mass_out);
+    }
+  }
   // the series a reference compares (spheric_test2: P1, P3, H2, H4), kept in memory
   void keep_sensor(const std::string& name, double t, double v) {
     if (scene_.reference.kind != ReferenceKind::SphericTest2) return;
@@ -183,6 +214,8 @@ class RunRecorder {
   std::map<std::string, reference::Series> sensors_;     // spheric_test2: (t, value) of its sensors
   double max_rho_dev_ = 0, max_ke_ = 0;
   std::int64_t max_outside_ = 0;
+  double open_t_ = 0;
+  std::vector<double> open_in_, open_out_;
 };
 
 }  // namespace ondine

@@ -64,6 +64,7 @@ class Checkpointer {
     for (int k = 0; k < 3; ++k) h.initial_momentum[k] = d0.momentum[k];
     h.checksum = sim.state_checksum();
     h.wall_corrections = sim.wall_corrections();
+    if (sim.open_on()) h.open = sim.open_state();
     if (sim.refinement_on()) {
       h.refinement = sim.refinement_state();
       h.refinement.zones = refinement_zone_text(scene_);
@@ -184,6 +185,17 @@ nlohmann::json run_summary(const Scene& scene, const RunOptions& opt, const Simu
                        {"refined", apr.refined()},
                        {"deleted", apr.deleted()}};
   }
+  if (sim.open_on()) {
+    // open boundaries: what crossed each plane (kg since t = 0) and the particles created and removed
+    const OpenBoundaries<D>& ob = sim.open_boundaries();
+    nlohmann::json list = nlohmann::json::array();
+    for (const OpenFlux& f : ob.fluxes())
+      list.push_back({{"name", f.name}, {"mass_in", f.mass_in}, {"mass_out", f.mass_out}, {"mass_created", f.created}, {"mass_removed", f.removed}});
+    j["open_boundaries"] = {{"boundaries", list},
+                            {"particles_created", ob.created_count()},
+                            {"particles_removed", ob.removed_count()},
+                            {"next_id", ob.next_id()}};
+  }
   j["kokkos_version"] = kokkos_version();
   j["ondine_version"] = ondine_version();
   j["scheme"] = {{"kernel", to_string(scene.kernel)},
@@ -290,6 +302,21 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
   report.cpu_seconds = static_cast<double>(std::clock() - timing.cpu0) / CLOCKS_PER_SEC;
   if (!diverged) report.errors = reference_errors(sim);
   recorder.add_figures(report.errors, sim.diagnostics().mass, diverged);
+  if (sim.open_on()) {
+    // the open boundaries' mass balances, relative to the initial mass: the particle set's
+    // change against created - removed, the fluid region's against in - out
+    const Diagnostics d = sim.diagnostics();
+    const OpenBoundaries<D>& ob = sim.open_boundaries();
+    double created = 0, removed = 0, in = 0, out = 0;
+    for (const OpenFlux& f : ob.fluxes()) {
+      created += f.created;
+      removed += f.removed;
+      in += f.mass_in;
+      out += f.mass_out;
+    }
+    report.errors["open_mass_balance"] = std::abs(d.mass - ob.initial_mass() - (created - removed)) / ob.initial_mass();
+    report.errors["open_fluid_mass_balance"] = std::abs(d.fluid_mass - ob.initial_fluid_mass() - (in - out)) / ob.initial_mass();
+  }
   if (scene.reference.kind == ReferenceKind::Hydrostatic && sim.has_walls() && !diverged) {
     const double worst = buoyancy_error(scene, sim.wall_forces());
     if (worst >= 0) report.errors["buoyancy_error"] = worst;

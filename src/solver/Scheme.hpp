@@ -11,6 +11,7 @@
 #include "kernels/ConsistentLaplacian.hpp"
 #include "kernels/FluxArgs.hpp"
 #include "kernels/NeighbourList.hpp"
+#include "kernels/OpenBoundary.hpp"
 #include "kernels/WallFluxPass.hpp"
 #include "kernels/WallPressure.hpp"
 #include "kernels/WallSet.hpp"
@@ -78,6 +79,10 @@ struct CompiledScheme {
   // the Shepard sum of each wave-gauge sample point
   void (*gauge_sums)(const PassContext<D>&, const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& points,
                      const Kokkos::View<double*, MemSpace>& sums) = nullptr;
+  // open boundaries: the fluid's Shepard state at each buffer particle's mirror point
+  // (kernels/OpenBoundary.hpp, MirrorSample), over the particles [0, ctx.end)
+  void (*open_samples)(const PassContext<D>&, const OpenPlanes<D>&, const field_view_t<field::OpenRole, D>& role,
+                       const Kokkos::View<double**, Kokkos::LayoutRight, MemSpace>& sample) = nullptr;
   // the pressure and viscous traction at each wall point (columns 0..D-1, D..2D-1)
   void (*wall_traction)(const PassContext<D>&, const Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace>& traction) = nullptr;
   // the guard spacing shifts of one level's guards [ctx.first, ctx.end) (refinement zones)

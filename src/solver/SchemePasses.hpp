@@ -146,6 +146,14 @@ void gauge_sums(const PassContext<D>& c, const Kokkos::View<double* [D], Kokkos:
                          GaugeShepardSum<D, K>{c.cells, c.box, K(c.R), c.R * c.R, c.end, c.x, c.rho, c.m, points, sums});
 }
 
+// the fluid's state at the buffer particles' mirror points (kernels/OpenBoundary.hpp)
+template <int D, class K>
+void open_samples(const PassContext<D>& c, const OpenPlanes<D>& planes, const field_view_t<field::OpenRole, D>& role,
+                  const Kokkos::View<double**, Kokkos::LayoutRight, MemSpace>& sample) {
+  Kokkos::parallel_for("ondine::Open::mirror_sample", Kokkos::RangePolicy<ExecSpace>(0, c.end),
+                       MirrorSample<D, K>{planes, c.cells, c.box, K(c.R), c.R * c.R, c.x, c.u, c.rho, c.P, c.m, role, sample});
+}
+
 // the traction of the fluid at each wall point (kernels/WallForces.hpp)
 template <int D, class K, bool Levels>
 void wall_traction(const PassContext<D>& c, const Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace>& traction) {
@@ -190,6 +198,7 @@ CompiledScheme<D> compile(const Scene& s) {
   c.shifting = walls ? &shifting<D, K, true> : &shifting<D, K, false>;
   c.probe_sum = levels ? &probe_sum<D, K, true> : &probe_sum<D, K, false>;
   c.gauge_sums = levels ? &gauge_sums<D, K, true> : &gauge_sums<D, K, false>;
+  if (!s.open_boundaries.empty()) c.open_samples = &open_samples<D, K>;
   c.wall_traction = levels ? &wall_traction<D, K, true> : &wall_traction<D, K, false>;
   c.guard_spacing = walls ? &guard_spacing<D, K, true> : &guard_spacing<D, K, false>;
   if (s.viscous_term == ViscousTerm::Morris) c.morris_factor = morris_lattice_factor<D>(K(s.R()), s.R(), s.dx);

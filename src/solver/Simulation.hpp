@@ -32,6 +32,7 @@
 #include "scene/Scene.hpp"
 #include "solver/AdaptiveRefinement.hpp"
 #include "solver/Domain.hpp"
+#include "solver/OpenBoundaries.hpp"
 #include "solver/WallModel.hpp"
 
 namespace ondine {
@@ -39,6 +40,7 @@ namespace ondine {
 // Integral quantities of the particle set (Kokkos reductions).
 struct Diagnostics {
   double mass = 0;
+  double fluid_mass = 0;  // with open boundaries: the fluid region's (buffer layers excluded); = mass otherwise
   Vec3 momentum{0, 0, 0};
   double kinetic_energy = 0;
   double max_speed = 0;
@@ -161,6 +163,11 @@ class Simulation {
   // free-surface flag (4.86-4.87) into field::FreeSurface, at output times
   void update_free_surface();
 
+  // open boundaries (kernels/OpenBoundary.hpp): their mass counters since t = 0, all ranks
+  bool open_on() const { return open_.on(); }
+  const OpenBoundaries<D>& open_boundaries() const { return open_; }
+  CheckpointOpen open_state() const { return open_.save(); }
+
   // adaptive particle refinement (only with refinement zones; docs/apr.md)
   bool refinement_on() const { return apr_on_; }
   const AdaptiveRefinement<D>& refinement() const { return apr_; }
@@ -196,6 +203,7 @@ class Simulation {
     f(field::Density{});
     f(field::Mass{});
     f(field::GlobalId{});
+    if (open_.on()) f(field::OpenRole{});
     if (!apr_on_) return;
     f(field::AprBirthLevel{});
     f(field::AprLevel{});
@@ -214,6 +222,9 @@ class Simulation {
   void refinement_bookkeeping();
   void refresh_guard_halos();       // several ranks: the interpolated fields of the guards' halo copies
   void build_level_walls();
+  // open boundaries at a step start (solver/SimulationOpen.hpp): roles, particles created and
+  // removed, the buffer particles' state
+  void open_step_start();
   // evaluation (solver/SimulationEvaluate.hpp)
   void update_walls(double t);
   bool consistent_laplacian() const;
@@ -260,6 +271,9 @@ class Simulation {
   field_view_t<field::DensityGradient, D> saved_grad_rho_;
   AdaptiveRefinement<D> apr_;
   bool apr_on_ = false;
+  OpenBoundaries<D> open_;
+  Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> open_sample_;  // scratch: the mirror samples
+  double last_dt_ = 0;  // the last step's (the reference states' filter)
   Kokkos::View<double* [D], Kokkos::LayoutRight, MemSpace> guard_shift_;  // per particle: GuardSpacing's shift
   // APR with walls: the walls of each level l >= 1, their quadrature at the level's spacing
   // (3D; in 2D at the finest level's, as level 0's) and their points binned at R_l

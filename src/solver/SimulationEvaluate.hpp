@@ -204,6 +204,7 @@ void Simulation<D>::evaluate(const bool later_stage) {
     // replaces the plain divergence of (4.23)/(4.25) by the renormalised one (kernels/RenormalisedContinuity.hpp)
     if (scene_.renormalised_continuity) scheme_.renormalised_continuity(pass_context(L));
   }
+  if (open_.on()) open_.zero_rates(p_, n);  // the buffer particles are not integrated
 }
 
 }  // namespace ondine

@@ -6,3 +6,4 @@
 #include "solver/SimulationEvaluate.hpp"
 #include "solver/SimulationStep.hpp"
 #include "solver/SimulationObservers.hpp"
+#include "solver/SimulationOpen.hpp"

@@ -61,6 +61,14 @@ Diagnostics Simulation<D>::diagnostics() const {
     d.kinetic_energy = 0;
     Kokkos::parallel_reduce("ondine::Diagnostics::kinetic_energy", Kokkos::RangePolicy<ExecSpace>(0, n), f, d.kinetic_energy);
   }
+  d.fluid_mass = d.mass;
+  // open boundaries: a buffer particle beyond the outer face is removed at the next step start
+  const auto role = open_.on() ? p_.get(field::OpenRole{}) : field_view_t<field::OpenRole, D>();
+  if (open_.on()) {
+    d.fluid_mass = 0;
+    Kokkos::parallel_reduce("ondine::Diagnostics::fluid_mass", Kokkos::RangePolicy<ExecSpace>(0, n),
+                            KOKKOS_LAMBDA(const int i, double& s) { s += role(i) == 0 ? m(i) : 0.0; }, d.fluid_mass);
+  }
   const auto box = domain_.box();
   double hi[D];
   for (int k = 0; k < D; ++k) hi[k] = box.lo[k] + box.len[k];
@@ -72,11 +80,13 @@ Diagnostics Simulation<D>::diagnostics() const {
                               nan = nan || !kmath::isfinite(x(i, k)) || !kmath::isfinite(u(i, k));
                               out = out || (!box.periodic[k] && (x(i, k) < box.lo[k] || x(i, k) > hi[k]));
                             }
+                            if (role.extent(0) > 0 && role(i) != 0) out = false;
                             c += (out ? 1 : 0) + (nan ? (std::int64_t(1) << 40) : 0);
                           },
                           bad);
   // over all ranks
   d.mass = comm().sum(d.mass);
+  d.fluid_mass = comm().sum(d.fluid_mass);
   for (int k = 0; k < D; ++k) d.momentum[k] = comm().sum(d.momentum[k]);
   d.kinetic_energy = comm().sum(d.kinetic_energy);
   d.max_speed = comm().max(d.max_speed);

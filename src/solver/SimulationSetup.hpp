@@ -63,6 +63,13 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
     if (apr_on_) build_level_walls();
     build_fluid_region();
   }
+  if (!scene_.open_boundaries.empty()) {
+    if (restart && !restart->header.open.present)
+      throw std::runtime_error("the checkpoint was written by a run without open boundaries; the case has open_boundaries");
+    open_ = OpenBoundaries<D>(scene_);
+  } else if (restart && restart->header.open.present) {
+    throw std::runtime_error("the checkpoint was written by a run with open boundaries; the case has none");
+  }
   if (restart) {
     load_checkpoint(*restart);
   } else {
@@ -94,10 +101,15 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
     apr_.initialise(p_, comm().sum(static_cast<std::int64_t>(n_own_)));
     for (int l = 1; l < apr_.levels(); ++l) refinement_bookkeeping();
   }
+  if (open_.on()) {
+    if (restart) open_.restore(restart->header.open);
+    else open_.start(p_, n_own_, comm().sum(static_cast<std::int64_t>(n_own_)));
+  }
   with_eos<D>(scene_, [&](auto eos) {
     update_pressure<D>(eos, p_.get(field::Density{}), p_.get(field::Pressure{}), n_own_);
   });
   initial_ = diagnostics();
+  if (open_.on() && !restart) open_.set_initial_mass(initial_.mass, initial_.fluid_mass);
   if (restart) {
     t_ = restart->header.time;
     steps_ = restart->header.step;

@@ -109,6 +109,7 @@ double Simulation<D>::step(double t_stop) {
   output_saved_ = false;  // finish_output() after a step has nothing to put back
   if (scene_.reorder_interval > 0 && steps_ % scene_.reorder_interval == 0) domain_.reorder_by_cell(p_, n_own_);
   if (apr_on_) refinement_step_start();
+  if (open_.on()) open_step_start();
   allocate_stage_storage();
   Kokkos::deep_copy(p_.get(field::StagePosition{}), p_.get(field::Position{}));
   Kokkos::deep_copy(p_.get(field::StageVelocity{}), p_.get(field::Velocity{}));
@@ -159,6 +160,7 @@ double Simulation<D>::step(double t_stop) {
   t_ += dt;
   ++steps_;
   stage_time_ = t_;
+  last_dt_ = dt;
   return dt;
 }
 
@@ -181,6 +183,23 @@ void Simulation<D>::shift_particles() {
   }
   const PassContext<D> c = pass_context(levels().front());
   scheme_.shifting(c, shifted_x_, shifted_u_, shifted_rho_, 0.02 * scene_.dx);  // at most 0.02 dx per step (kernels/ShiftingPass.hpp)
+  if (open_.on()) {  // the buffer layers keep their lattice and state (kernels/OpenBoundary.hpp)
+    const auto role = p_.get(field::OpenRole{});
+    const auto x = p_.get(field::Position{});
+    const auto u = p_.get(field::Velocity{});
+    const auto rho = p_.get(field::Density{});
+    const auto sx = shifted_x_;
+    const auto su = shifted_u_;
+    const auto srho = shifted_rho_;
+    Kokkos::parallel_for("ondine::Open::keep_buffers", Kokkos::RangePolicy<ExecSpace>(c.first, c.end), KOKKOS_LAMBDA(const int i) {
+      if (role(i) == 0) return;
+      for (int k = 0; k < D; ++k) {
+        sx(i, k) = x(i, k);
+        su(i, k) = u(i, k);
+      }
+      srho(i) = rho(i);
+    });
+  }
   // the shifted particles [first, end) back into the state
   const auto owned = std::make_pair(static_cast<std::size_t>(c.first), static_cast<std::size_t>(c.end));
   Kokkos::deep_copy(Kokkos::subview(p_.get(field::Position{}), owned, Kokkos::ALL), Kokkos::subview(shifted_x_, owned, Kokkos::ALL));

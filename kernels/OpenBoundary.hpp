@@ -1,0 +1,343 @@
+#pragma once
+// Open boundaries by buffer layers (docs/case-file.md, "Open boundaries"; docs/design.md).
+// Each open boundary b is a plane normal to an axis with a buffer layer of thickness
+// L_b = layers dx on its outer side; depth(b, x) > 0 in the fluid, in [-L_b, 0) in the
+// buffer. A particle's role (field::OpenRole) is 0 in the fluid, b + 1 in the buffer of b.
+//
+// At each step start:
+//  - OpenClassify: an inlet buffer particle that crossed into the fluid becomes fluid and
+//    spawns its replacement L_b upstream (the buffer lattice goes on); a fluid particle that
+//    crossed an outlet joins its buffer; an outlet buffer particle beyond -L_b is removed, as
+//    is a fluid particle that flows back into an inlet's buffer. The masses that cross each
+//    plane are summed (mass in/out of the fluid region, exactly the particles' masses).
+//  - MirrorSample: the fluid's Shepard state (2.40) at each buffer particle's mirror point
+//    x - 2 depth n, over fluid particles only.
+//  - BufferState: the buffer particle's state. Non-reflecting (after Lastiwka et al. 2009,
+//    linear acoustics along the normal): the invariant leaving the fluid,
+//    J_out = p_m - rho0 c0 u_m.n, comes from the mirror sample, the one entering it,
+//    J_in = p_ref + rho0 c0 u_ref.n, from the reference state of the buffer's facet (the
+//    inlet's imposed velocity with the facet's filtered fluid pressure; the outlet's imposed
+//    pressure with the facet's filtered normal velocity), and
+//      p = (J_in + J_out) / 2,  u.n = (J_in - J_out) / (2 rho0 c0).
+//    A wave leaving the fluid passes into the buffer as it would into more fluid; the
+//    references pin the mean velocity of an inlet and the mean pressure of an outlet.
+//    Otherwise (reflecting): inlet u imposed, p = p_m; outlet u = u_m, p imposed.
+//    The tangential velocity is the imposed one at an inlet, the mirror's at an outlet.
+//  - ZeroBufferRates (after each evaluation): the buffer particles are not integrated, they
+//    move with their step-start velocity.
+#include "kernels/CellList.hpp"
+#include "kernels/Fields.hpp"
+#include "kernels/NeighbourLoops.hpp"
+#include "kernels/PeriodicBox.hpp"
+#include "kernels/Vec.hpp"
+
+namespace ondine {
+
+constexpr int kOpenMax = 8;  // = kMaxOpenBoundaries (scene/Scene.hpp)
+
+// the open boundaries, on the device
+template <int D>
+struct OpenPlanes {
+  int count = 0;
+  int axis[kOpenMax] = {};
+  double sign[kOpenMax] = {};
+  double position[kOpenMax] = {};
+  double L[kOpenMax] = {};       // buffer thickness (m)
+  int inlet[kOpenMax] = {};      // 1 inlet, 0 outlet
+  int non_reflecting[kOpenMax] = {};
+  double velocity[kOpenMax][D] = {};
+  int parabolic[kOpenMax] = {};
+  int profile_axis[kOpenMax] = {};
+  double span_lo[kOpenMax] = {}, span_hi[kOpenMax] = {};
+  double pressure[kOpenMax] = {};
+  // facets: the plane cut in squares of dx along its (D-1) tangential axes, over the domain
+  int t_axis[kOpenMax][2] = {};
+  double t_lo[kOpenMax][2] = {};
+  int nf[kOpenMax][2] = {};
+  int facet0[kOpenMax] = {};  // first facet index of boundary b (facets of all boundaries in one array)
+  double dx = 0;
+
+  KOKKOS_INLINE_FUNCTION double depth(int b, const Vec<D>& x) const { return sign[b] * (x[axis[b]] - position[b]); }
+  KOKKOS_INLINE_FUNCTION int facet(int b, const Vec<D>& x) const {
+    int f = 0, stride = 1;
+    for (int t = 0; t < D - 1; ++t) {
+      int c = static_cast<int>(kmath::floor((x[t_axis[b][t]] - t_lo[b][t]) / dx));
+      c = c < 0 ? 0 : (c >= nf[b][t] ? nf[b][t] - 1 : c);
+      f += c * stride;
+      stride *= nf[b][t];
+    }
+    return facet0[b] + f;
+  }
+  // the inlet's imposed velocity at x (the profile scales the normal component)
+  KOKKOS_INLINE_FUNCTION Vec<D> imposed_velocity(int b, const Vec<D>& x) const {
+    Vec<D> u;
+    for (int k = 0; k < D; ++k) u[k] = velocity[b][k];
+    if (parabolic[b]) {
+      const double s = x[profile_axis[b]], lo = span_lo[b], hi = span_hi[b];
+      const double shape = (s <= lo || s >= hi) ? 0.0 : 6.0 * (s - lo) * (hi - s) / ((hi - lo) * (hi - lo));
+      for (int k = 0; k < D; ++k) u[k] *= shape;
+    }
+    return u;
+  }
+};
+
+// what the step start does with a particle
+namespace open_action {
+constexpr int keep = 0, remove = 1, spawn = 2;
+}
+
+// per boundary: [0] mass into the fluid, [1] mass out of it, [2] mass created, [3] mass removed
+using OpenTally = Kokkos::View<double* [4], Kokkos::LayoutRight, MemSpace>;
+
+template <int D>
+struct OpenClassify {
+  OpenPlanes<D> planes;
+  field_view_t<field::Position, D> x;
+  field_view_t<field::Mass, D> m;
+  field_view_t<field::OpenRole, D> role;
+  Kokkos::View<int*, MemSpace> action, spawn_boundary;
+  OpenTally tally;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    const Vec<D> xi = load<D>(x, i);
+    const int r = role(i);
+    int act = open_action::keep;
+    if (r == 0) {
+      for (int b = 0; b < planes.count; ++b) {
+        if (planes.depth(b, xi) >= 0) continue;
+        Kokkos::atomic_add(&tally(b, 1), m(i));
+        if (planes.inlet[b]) {  // back into an inlet's buffer: removed
+          act = open_action::remove;
+          Kokkos::atomic_add(&tally(b, 3), m(i));
+        } else {
+          role(i) = b + 1;
+        }
+        break;
+      }
+    } else {
+      const int b = r - 1;
+      const double d = planes.depth(b, xi);
+      if (d >= 0) {  // into the fluid
+        role(i) = 0;
+        Kokkos::atomic_add(&tally(b, 0), m(i));
+        if (planes.inlet[b]) {
+          act = open_action::spawn;
+          spawn_boundary(i) = b;
+          Kokkos::atomic_add(&tally(b, 2), m(i));
+        }
+      } else if (d < -planes.L[b]) {  // beyond the buffer's outer face
+        act = open_action::remove;
+        Kokkos::atomic_add(&tally(b, 3), m(i));
+      }
+    }
+    action(i) = act;
+  }
+};
+
+// exclusive scans of the kept particles and of the spawning ones
+struct OpenScan {
+  Kokkos::View<int*, MemSpace> action, kept_index, spawn_index;
+  struct value_type {
+    int kept, spawned;
+  };
+  KOKKOS_INLINE_FUNCTION void init(value_type& v) const { v.kept = v.spawned = 0; }
+  KOKKOS_INLINE_FUNCTION void join(volatile value_type& a, const volatile value_type& b) const {
+    a.kept += b.kept;
+    a.spawned += b.spawned;
+  }
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, value_type& v, const bool final) const {
+    if (final) {
+      kept_index(i) = v.kept;
+      spawn_index(i) = v.spawned;
+    }
+    v.kept += action(i) != open_action::remove ? 1 : 0;
+    v.spawned += action(i) == open_action::spawn ? 1 : 0;
+  }
+};
+
+// the new order: the kept particles, then a copy of each spawning one; the spawning ones' ids
+template <int D>
+struct OpenOrder {
+  Kokkos::View<int*, MemSpace> action, kept_index, spawn_index, order, boundary_of_spawn, spawn_boundary;
+  Kokkos::View<std::int64_t*, MemSpace> spawn_source_id;
+  field_view_t<field::GlobalId, D> id;
+  int kept;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    if (action(i) != open_action::remove) order(kept_index(i)) = i;
+    if (action(i) == open_action::spawn) {
+      const int k = spawn_index(i);
+      order(kept + k) = i;
+      boundary_of_spawn(k) = spawn_boundary(i);
+      spawn_source_id(k) = id(i);
+    }
+  }
+};
+
+// the spawned copies [kept, kept + n): moved L_b upstream, into the buffer, with new ids
+// next_id + (the rank of their source's id among all the sources of all ranks)
+template <int D>
+struct OpenSpawnFill {
+  OpenPlanes<D> planes;
+  int kept;
+  Kokkos::View<int*, MemSpace> boundary_of_spawn;
+  Kokkos::View<std::int64_t*, MemSpace> spawn_source_id, all_sources;  // all_sources sorted
+  std::int64_t next_id;
+  field_view_t<field::Position, D> x;
+  field_view_t<field::GlobalId, D> id;
+  field_view_t<field::OpenRole, D> role;
+  KOKKOS_INLINE_FUNCTION void operator()(const int k) const {
+    const int j = kept + k, b = boundary_of_spawn(k);
+    x(j, planes.axis[b]) -= planes.sign[b] * planes.L[b];
+    role(j) = b + 1;
+    const std::int64_t src = spawn_source_id(k);
+    int lo = 0, hi = static_cast<int>(all_sources.extent(0));
+    while (lo < hi) {
+      const int mid = (lo + hi) / 2;
+      if (all_sources(mid) < src) lo = mid + 1;
+      else hi = mid;
+    }
+    id(j) = next_id + lo;
+  }
+};
+
+// the roles at the start of a run: buffer particles by position, fluid elsewhere
+template <int D>
+struct OpenInitialRoles {
+  OpenPlanes<D> planes;
+  field_view_t<field::Position, D> x;
+  field_view_t<field::OpenRole, D> role;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    const Vec<D> xi = load<D>(x, i);
+    int r = 0;
+    for (int b = 0; b < planes.count; ++b)
+      if (planes.depth(b, xi) < 0) r = b + 1;
+    role(i) = r;
+  }
+};
+
+// the fluid's Shepard state at each buffer particle's mirror point: p, u, and the Shepard sum
+template <int D, class Kernel>
+struct MirrorSample {
+  OpenPlanes<D> planes;
+  CellList<D> cells;
+  PeriodicBox<D> box;
+  Kernel W;
+  double R2;
+  field_view_t<field::Position, D> x;
+  field_view_t<field::Velocity, D> u;
+  field_view_t<field::Density, D> rho;
+  field_view_t<field::Pressure, D> P;
+  field_view_t<field::Mass, D> m;
+  field_view_t<field::OpenRole, D> role;
+  Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> sample;  // n x (D + 2): u, p, Shepard sum
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    if (role(i) == 0) return;
+    const int b = role(i) - 1;
+    Vec<D> xm = load<D>(x, i);
+    xm[planes.axis[b]] -= 2.0 * planes.sign[b] * planes.depth(b, xm);
+    double s = 0, p = 0, us[D] = {};
+    for_each_point_within<D>(cells, box, x, xm, R2, [&](const int j, const Vec<D>&, const double r) {
+      if (role(j) != 0) return;
+      const double w = m(j) / rho(j) * W.value(r);
+      s += w;
+      p += w * P(j);
+      for (int k = 0; k < D; ++k) us[k] += w * u(j, k);
+    });
+    const double inv = s > 0 ? 1.0 / s : 0.0;
+    for (int k = 0; k < D; ++k) sample(i, k) = us[k] * inv;
+    sample(i, D) = p * inv;
+    sample(i, D + 1) = s;
+  }
+};
+
+// per facet: the sums of the mirror pressure, normal velocity and count of its buffer particles
+template <int D>
+struct FacetSums {
+  OpenPlanes<D> planes;
+  field_view_t<field::Position, D> x;
+  field_view_t<field::OpenRole, D> role;
+  Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> sample;
+  Kokkos::View<double* [3], Kokkos::LayoutRight, MemSpace> sums;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    if (role(i) == 0 || sample(i, D + 1) <= 0.5) return;  // a mirror point with too little fluid around it
+    const int b = role(i) - 1;
+    const int f = planes.facet(b, load<D>(x, i));
+    Kokkos::atomic_add(&sums(f, 0), sample(i, D));
+    Kokkos::atomic_add(&sums(f, 1), sample(i, planes.axis[b]) * planes.sign[b]);
+    Kokkos::atomic_add(&sums(f, 2), 1.0);
+  }
+};
+
+// the buffer particles' state (see the top of this file); rho from the pressure by the EOS
+template <int D, class Eos>
+struct BufferState {
+  OpenPlanes<D> planes;
+  Eos eos;
+  double rho0, c0;
+  field_view_t<field::Position, D> x;
+  field_view_t<field::Velocity, D> u;
+  field_view_t<field::Density, D> rho;
+  field_view_t<field::Pressure, D> P;
+  field_view_t<field::OpenRole, D> role;
+  Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> sample;
+  Kokkos::View<double* [2], Kokkos::LayoutRight, MemSpace> reference;  // per facet: filtered p, u.n
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    if (role(i) == 0) return;
+    const int b = role(i) - 1, a = planes.axis[b];
+    const double sg = planes.sign[b];
+    const Vec<D> xi = load<D>(x, i);
+    const bool sampled = sample(i, D + 1) > 0.5;
+    Vec<D> um;
+    for (int k = 0; k < D; ++k) um[k] = sampled ? sample(i, k) : u(i, k);
+    const double pm = sampled ? sample(i, D) : P(i);
+    const int f = planes.facet(b, xi);
+    double p, un;
+    Vec<D> ut;  // the velocity whose tangential components the particle takes
+    if (planes.inlet[b]) {
+      ut = planes.imposed_velocity(b, xi);
+      const double u_ref = ut[a] * sg;
+      if (planes.non_reflecting[b]) {
+        const double J_in = reference(f, 0) + rho0 * c0 * u_ref, J_out = pm - rho0 * c0 * um[a] * sg;
+        p = 0.5 * (J_in + J_out);
+        un = 0.5 * (J_in - J_out) / (rho0 * c0);
+      } else {
+        p = pm;
+        un = u_ref;
+      }
+    } else {
+      ut = um;
+      if (planes.non_reflecting[b]) {
+        const double J_in = planes.pressure[b] + rho0 * c0 * reference(f, 1), J_out = pm - rho0 * c0 * um[a] * sg;
+        p = 0.5 * (J_in + J_out);
+        un = 0.5 * (J_in - J_out) / (rho0 * c0);
+      } else {
+        p = planes.pressure[b];
+        un = um[a] * sg;
+      }
+    }
+    for (int k = 0; k < D; ++k) u(i, k) = ut[k];
+    u(i, a) = un * sg;
+    rho(i) = eos.density(p);
+    P(i) = p;
+  }
+};
+
+// the buffer particles are not integrated: no rates (their velocity holds through the step)
+template <int D>
+struct ZeroBufferRates {
+  field_view_t<field::OpenRole, D> role;
+  field_view_t<field::Acceleration, D> du;
+  field_view_t<field::DensityRate, D> drho;
+  field_view_t<field::TransportCorrection, D> du0;  // unallocated without scheme.transport: ale
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    if (role(i) == 0) return;
+    for (int k = 0; k < D; ++k) du(i, k) = 0;
+    drho(i) = 0;
+    if (du0.extent(0) > 0)
+      for (int k = 0; k < D; ++k) du0(i, k) = 0;
+  }
+};
+
+}  // namespace ondine
