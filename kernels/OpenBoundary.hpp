@@ -6,21 +6,23 @@
 //
 // At each step start:
 //  - OpenClassify: an inlet buffer particle that crossed into the fluid becomes fluid and
-//    spawns its replacement L_b upstream (the buffer lattice goes on); a fluid particle that
-//    crossed an outlet joins its buffer; an outlet buffer particle beyond -L_b is removed, as
-//    is a fluid particle that flows back into an inlet's buffer. The masses that cross each
+//    spawns its replacement L_b upstream (the buffer lattice goes on; one pushed out of the
+//    buffer's outer face comes back at its front); a fluid particle that crossed an outlet
+//    joins its buffer; an outlet buffer particle beyond -L_b is removed, as is a fluid
+//    particle that flows back into an inlet's buffer. The masses that cross each
 //    plane are summed (mass in/out of the fluid region, exactly the particles' masses).
 //  - MirrorSample: the fluid's Shepard state (2.40) at each buffer particle's mirror point
 //    x - 2 depth n, over fluid particles only.
-//  - BufferState: the buffer particle's state. Non-reflecting (after Lastiwka et al. 2009,
-//    linear acoustics along the normal): the invariant leaving the fluid,
-//    J_out = p_m - rho0 c0 u_m.n, comes from the mirror sample, the one entering it,
-//    J_in = p_ref + rho0 c0 u_ref.n, from the reference state of the buffer's facet (the
-//    inlet's imposed velocity with the facet's filtered fluid pressure; the outlet's imposed
-//    pressure with the facet's filtered normal velocity), and
-//      p = (J_in + J_out) / 2,  u.n = (J_in - J_out) / (2 rho0 c0).
-//    A wave leaving the fluid passes into the buffer as it would into more fluid; the
-//    references pin the mean velocity of an inlet and the mean pressure of an outlet.
+//  - BufferState: the buffer particle's state. Non-reflecting (characteristic conditions in
+//    the spirit of Lastiwka et al. 2009, linear acoustics along the normal n into the fluid):
+//    the invariant leaving the fluid, J_out = p_m - rho0 c0 u_m.n, comes from the mirror
+//    sample; the one entering it is set so that its mean over the facet's relaxation time
+//    gives the imposed quantity: J_in = <J_out> + 2 rho0 c0 U.n at an inlet (mean velocity U),
+//    J_in = 2 p_out - <J_out> at an outlet (mean pressure p_out), <J_out> the facet's filtered
+//    J_out; then p = (J_in + J_out) / 2, u.n = (J_in - J_out) / (2 rho0 c0).
+//    A wave leaving the fluid passes into the buffer as into more fluid (J_in does not
+//    follow it); variations slower than the relaxation time see a velocity inlet and a
+//    pressure outlet.
 //    Otherwise (reflecting): inlet u imposed, p = p_m; outlet u = u_m, p imposed.
 //    The tangential velocity is the imposed one at an inlet, the mirror's at an outlet.
 //  - ZeroBufferRates (after each evaluation): the buffer particles are not integrated, they
@@ -57,7 +59,10 @@ struct OpenPlanes {
   int facet0[kOpenMax] = {};  // first facet index of boundary b (facets of all boundaries in one array)
   double dx = 0;
 
-  KOKKOS_INLINE_FUNCTION double depth(int b, const Vec<D>& x) const { return sign[b] * (x[axis[b]] - position[b]); }
+  // depth(b, x) = (x - plane).n, shifted by 1e-6 dx so that a lattice column lying on the plane
+  // is fluid and one lying on the buffer's outer face is buffer whatever the round-off: a
+  // buffer [-L, 0) holds exactly `layers` columns of any lattice
+  KOKKOS_INLINE_FUNCTION double depth(int b, const Vec<D>& x) const { return sign[b] * (x[axis[b]] - position[b]) + 1e-6 * dx; }
   KOKKOS_INLINE_FUNCTION int facet(int b, const Vec<D>& x) const {
     int f = 0, stride = 1;
     for (int t = 0; t < D - 1; ++t) {
@@ -126,8 +131,14 @@ struct OpenClassify {
           Kokkos::atomic_add(&tally(b, 2), m(i));
         }
       } else if (d < -planes.L[b]) {  // beyond the buffer's outer face
-        act = open_action::remove;
-        Kokkos::atomic_add(&tally(b, 3), m(i));
+        if (planes.inlet[b]) {
+          // an inlet's lane is a ring of length L: a particle pushed back out of it (by a strong
+          // pressure wave) comes back at its front, so that the lane keeps its particles
+          x(i, planes.axis[b]) += planes.sign[b] * planes.L[b];
+        } else {
+          act = open_action::remove;
+          Kokkos::atomic_add(&tally(b, 3), m(i));
+        }
       }
     }
     action(i) = act;
@@ -200,18 +211,24 @@ struct OpenSpawnFill {
   }
 };
 
-// the roles at the start of a run: buffer particles by position, fluid elsewhere
+// the roles at the start of a run: buffer particles by position, fluid elsewhere; keep(i) = 0
+// beyond a buffer's outer face
 template <int D>
 struct OpenInitialRoles {
   OpenPlanes<D> planes;
   field_view_t<field::Position, D> x;
   field_view_t<field::OpenRole, D> role;
+  Kokkos::View<int*, MemSpace> keep;
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<D> xi = load<D>(x, i);
-    int r = 0;
-    for (int b = 0; b < planes.count; ++b)
-      if (planes.depth(b, xi) < 0) r = b + 1;
+    int r = 0, k = 1;
+    for (int b = 0; b < planes.count; ++b) {
+      const double d = planes.depth(b, xi);
+      if (d < 0) r = b + 1;
+      if (d < -planes.L[b]) k = 0;
+    }
     role(i) = r;
+    keep(i) = k;
   }
 };
 
@@ -295,11 +312,14 @@ struct BufferState {
     const int f = planes.facet(b, xi);
     double p, un;
     Vec<D> ut;  // the velocity whose tangential components the particle takes
+    // the invariant leaving the fluid, now and filtered over the facet's relaxation time
+    const double J_out = pm - rho0 * c0 * um[a] * sg;
+    const double J_mean = reference(f, 0) - rho0 * c0 * reference(f, 1);
     if (planes.inlet[b]) {
       ut = planes.imposed_velocity(b, xi);
       const double u_ref = ut[a] * sg;
       if (planes.non_reflecting[b]) {
-        const double J_in = reference(f, 0) + rho0 * c0 * u_ref, J_out = pm - rho0 * c0 * um[a] * sg;
+        const double J_in = J_mean + 2.0 * rho0 * c0 * u_ref;  // the mean of u.n is u_ref
         p = 0.5 * (J_in + J_out);
         un = 0.5 * (J_in - J_out) / (rho0 * c0);
       } else {
@@ -309,7 +329,7 @@ struct BufferState {
     } else {
       ut = um;
       if (planes.non_reflecting[b]) {
-        const double J_in = planes.pressure[b] + rho0 * c0 * reference(f, 1), J_out = pm - rho0 * c0 * um[a] * sg;
+        const double J_in = 2.0 * planes.pressure[b] - J_mean;  // the mean of p is the imposed pressure
         p = 0.5 * (J_in + J_out);
         un = 0.5 * (J_in - J_out) / (rho0 * c0);
       } else {

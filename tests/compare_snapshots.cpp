@@ -73,6 +73,12 @@ int main(int argc, char** argv) {
       std::printf("the particle ids differ\n");
       return 1;
     }
+  // every id once (particles created and removed, e.g. at open boundaries, keep ids unique)
+  for (std::size_t i = 1; i < a.particles; ++i)
+    if ((*ida)[oa[i]] == (*ida)[oa[i - 1]]) {
+      std::printf("id %.0f is carried by two particles\n", (*ida)[oa[i]]);
+      return 1;
+    }
   bool ok = true;
   for (const std::string& n : names) {
     int ca = 1, cb = 1;

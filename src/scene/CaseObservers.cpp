@@ -96,11 +96,12 @@ void read_wave_gauges(const Reader& r, YAML::Node& root, Scene& s) {
 void read_reference(const Reader& r, YAML::Node& root, Scene& s) {
   const int D = s.dimension;
   if (const YAML::Node rf = root["reference"]) {
-    r.only_keys(rf, "reference", {"type", "length", "origin", "velocity", "file"});
+    r.only_keys(rf, "reference", {"type", "length", "origin", "velocity", "file", "wall", "from"});
     const std::string t = r.word(r.required(rf, "reference", "type"), "reference.type",
                                  {"poiseuille", "couette", "hydrostatic", "martin_moyce", "ghia_re100", "ghia_re1000", "duct",
-                                  "spheric_test2"});
-    s.reference.kind = t == "duct"         ? ReferenceKind::Duct
+                                  "spheric_test2", "cylinder"});
+    s.reference.kind = t == "cylinder"     ? ReferenceKind::Cylinder
+                       : t == "duct"         ? ReferenceKind::Duct
                        : t == "spheric_test2" ? ReferenceKind::SphericTest2
                        : t == "poiseuille" ? ReferenceKind::Poiseuille
                        : t == "couette" ? ReferenceKind::Couette
@@ -119,11 +120,21 @@ void read_reference(const Reader& r, YAML::Node& root, Scene& s) {
     if (s.reference.kind == ReferenceKind::Duct && !(s.nu > 0)) r.fail(rf["type"], "reference.type", "duct needs fluid.viscosity > 0");
     if ((s.reference.kind == ReferenceKind::Poiseuille || s.reference.kind == ReferenceKind::Couette) && !(s.nu > 0))
       r.fail(rf["type"], "reference.type", t + " needs fluid.viscosity > 0");
-    if (s.reference.kind == ReferenceKind::Couette)
+    if (s.reference.kind == ReferenceKind::Cylinder) {
+      // a body in a stream: its wall, the stream's speed, the start of the averaging
+      s.reference.velocity = r.positive(r.required(rf, "reference", "velocity"), "reference.velocity", " (m/s, the stream's speed)");
+      s.reference.wall = r.text(r.required(rf, "reference", "wall"), "reference.wall", "the name of the body's wall");
+      if (std::none_of(s.walls.begin(), s.walls.end(), [&](const Wall& w) { return w.name == s.reference.wall; }))
+        r.fail(rf["wall"], "reference.wall", "no wall is named '" + s.reference.wall + "'");
+      if (rf["from"]) s.reference.from = r.non_negative(rf["from"], "reference.from", " (s)");
+      if (s.reference.from >= s.duration) r.fail(rf["from"] ? rf["from"] : rf, "reference.from", "expected a time before time.duration");
+    } else if (rf["wall"] || rf["from"]) {
+      r.fail(rf["wall"] ? rf["wall"] : rf["from"], "reference", "wall and from belong to a cylinder reference");
+    } else if (s.reference.kind == ReferenceKind::Couette)
       s.reference.velocity = r.number(r.required(rf, "reference", "velocity"), "reference.velocity",
                                       "the speed along x of the wall at y = origin + length (m/s)");
-    else if (rf["velocity"])
-      r.fail(rf["velocity"], "reference.velocity", "only a couette reference takes a wall velocity");
+    else if (rf["velocity"] && s.reference.kind != ReferenceKind::Cylinder)
+      r.fail(rf["velocity"], "reference.velocity", "only a couette or cylinder reference takes a velocity");
   }
 }
 

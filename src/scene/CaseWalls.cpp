@@ -32,10 +32,28 @@ void read_wall_file(const Reader& r, const YAML::Node& f, const std::string& key
   }
 }
 
-// the polyline: points, or a file of points
+// circle: {centre, radius, segments}: a closed polygon inscribed in the circle, its vertices
+// counter-clockwise from angle 0
+void read_wall_circle(const Reader& r, const YAML::Node& c, const std::string& key, Wall& wall) {
+  r.only_keys(c, key + ".circle", {"centre", "radius", "segments"});
+  const Vec3 o = r.vector(r.required(c, key + ".circle", "centre"), key + ".circle.centre", 2, " (m)");
+  const double rad = r.positive(r.required(c, key + ".circle", "radius"), key + ".circle.radius", " (m)");
+  const int n = static_cast<int>(r.integer(r.required(c, key + ".circle", "segments"), key + ".circle.segments", 8, 1000000));
+  for (int k = 0; k < n; ++k) {
+    const double a = 2.0 * M_PI * k / n;
+    wall.points.push_back({o[0] + rad * std::cos(a), o[1] + rad * std::sin(a)});
+  }
+  wall.closed = true;
+}
+
+// the polyline: points, a file of points, or a circle
 void read_wall_points(const Reader& r, const YAML::Node& w, const std::string& key, const std::string& path, Wall& wall) {
   if (w["points"] && w["file"]) r.fail(w["file"], key + ".file", "give either points or file, not both");
-  if (const YAML::Node pts = w["points"]) {
+  if (w["circle"] && (w["points"] || w["file"])) r.fail(w["circle"], key + ".circle", "give either circle, points or file, not two of them");
+  if (w["circle"] && w["closed"]) r.fail(w["closed"], key + ".closed", "a circle is closed; leave out closed");
+  if (const YAML::Node c = w["circle"]) {
+    read_wall_circle(r, c, key, wall);
+  } else if (const YAML::Node pts = w["points"]) {
     if (!pts.IsSequence()) r.fail(pts, key + ".points", "expected a list of [x, y] points");
     for (std::size_t k = 0; k < pts.size(); ++k) {
       const Vec3 v = r.vector(pts[k], key + ".points[" + std::to_string(k) + "]", 2, " (m)");
@@ -44,7 +62,7 @@ void read_wall_points(const Reader& r, const YAML::Node& w, const std::string& k
   } else if (const YAML::Node f = w["file"]) {
     read_wall_file(r, f, key, path, wall);
   } else {
-    r.fail(w, key + ".points", "required: points (a list of [x, y]) or file (a CSV of x, y lines)");
+    r.fail(w, key + ".points", "required: points (a list of [x, y]), file (a CSV of x, y lines) or circle ({centre, radius, segments})");
   }
 }
 
@@ -133,7 +151,7 @@ Wall read_wall(const Reader& r, const YAML::Node& w, std::size_t i, const std::s
   const std::string key = "walls[" + std::to_string(i) + "]";
   refuse_wall_keys_of_other_dimension(r, w, key, s.dimension);
   if (s.dimension == 2)
-    r.only_keys(w, key, {"name", "points", "file", "closed", "fluid_side", "condition", "motion", "moment_centre"});
+    r.only_keys(w, key, {"name", "points", "file", "circle", "closed", "fluid_side", "condition", "motion", "moment_centre"});
   else
     r.only_keys(w, key, {"name", "box", "rectangle", "prism", "cylinder", "stl", "units", "scale", "rotate", "translate",
                          "fluid_side", "condition", "motion", "moment_centre"});

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "io/Checkpoint.hpp"
+#include "kernels/FluidRegion.hpp"
 #include "kernels/OpenBoundary.hpp"
 #include "kernels/Permute.hpp"
 #include "parallel/Communicator.hpp"
@@ -81,13 +82,26 @@ class OpenBoundaries {
     initial_fluid_mass_ = fluid;
   }
   double initial_mass() const { return initial_mass_; }
+  // the last step's length: the reference states' filter at the next step start
+  void set_last_dt(double dt) { last_dt_ = dt; }
+  double last_dt() const { return last_dt_; }
   double initial_fluid_mass() const { return initial_fluid_mass_; }
 
-  // a new run: roles by position, ids from the global count on
-  void start(ParticleSet<D>& p, int n, std::int64_t global_count) {
+  // a new run: roles by position, the particles beyond a buffer's outer face dropped (the
+  // fluid blocks may reach past them), ids from the global count on; returns the owned count
+  int start(ParticleSet<D>& p, int n, std::int64_t global_count) {
+    Kokkos::View<int*, MemSpace> keep("ondine::Open::keep", n), index("ondine::Open::keep_index", n);
     Kokkos::parallel_for("ondine::Open::initial_roles", Kokkos::RangePolicy<ExecSpace>(0, n),
-                         OpenInitialRoles<D>{planes_, p.get(field::Position{}), p.allocate(field::OpenRole{})});
+                         OpenInitialRoles<D>{planes_, p.get(field::Position{}), p.allocate(field::OpenRole{}), keep});
+    int kept = 0;
+    Kokkos::parallel_scan("ondine::Open::keep_scan", Kokkos::RangePolicy<ExecSpace>(0, n), KeepScan{keep, index}, kept);
+    if (kept < n) {
+      Kokkos::View<int*, MemSpace> order("ondine::Open::keep_order", kept);
+      Kokkos::parallel_for("ondine::Open::keep_gather", Kokkos::RangePolicy<ExecSpace>(0, n), KeepGather{keep, index, order});
+      p.permute([&order](const auto& v) { return permuted(v, order); }, static_cast<std::size_t>(kept));
+    }
     next_id_ = global_count;
+    return kept;
   }
 
   // Step start (kernels/OpenBoundary.hpp, OpenClassify): roles, particles created and removed.
@@ -193,7 +207,7 @@ class OpenBoundaries {
     CheckpointOpen c;
     c.present = true;
     c.next_id = next_id_;
-    c.state = {static_cast<double>(created_count_), static_cast<double>(removed_count_), initial_mass_, initial_fluid_mass_};
+    c.state = {static_cast<double>(created_count_), static_cast<double>(removed_count_), initial_mass_, initial_fluid_mass_, last_dt_};
     for (const OpenFlux& f : flux_)
       for (double v : {f.mass_in, f.mass_out, f.created, f.removed}) c.state.push_back(v);
     c.state.insert(c.state.end(), ref_host_.begin(), ref_host_.end());
@@ -201,7 +215,7 @@ class OpenBoundaries {
   }
   // throws std::runtime_error when the state does not fit these boundaries
   void restore(const CheckpointOpen& c) {
-    const std::size_t want = 4 + 4 * flux_.size() + ref_host_.size();
+    const std::size_t want = 5 + 4 * flux_.size() + ref_host_.size();
     if (!c.present || c.state.size() != want)
       throw std::runtime_error("the checkpoint's open-boundary state (attribute open_state) has " + std::to_string(c.state.size()) +
                                " values; the case's open boundaries need " + std::to_string(want) +
@@ -211,7 +225,8 @@ class OpenBoundaries {
     removed_count_ = static_cast<std::int64_t>(c.state[1]);
     initial_mass_ = c.state[2];
     initial_fluid_mass_ = c.state[3];
-    std::size_t k = 4;
+    last_dt_ = c.state[4];
+    std::size_t k = 5;
     for (OpenFlux& f : flux_) {
       f.mass_in = c.state[k++];
       f.mass_out = c.state[k++];
@@ -237,7 +252,7 @@ class OpenBoundaries {
   OpenTally tally_;
   std::vector<OpenFlux> flux_;
   std::int64_t next_id_ = 0, created_count_ = 0, removed_count_ = 0;
-  double initial_mass_ = 0, initial_fluid_mass_ = 0;
+  double initial_mass_ = 0, initial_fluid_mass_ = 0, last_dt_ = 0;
 };
 
 }  // namespace ondine

@@ -5,6 +5,7 @@
 // dam-break front). A restarted run takes back the rows of the earlier run up to the
 // restart time. Collective; rank 0 writes the text files.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <string>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "io/SnapshotWriter.hpp"
+#include "reference/ForceCoefficients.hpp"
 #include "reference/References.hpp"
 #include "reference/SensorSeries.hpp"
 #include "solver/RunOutput.hpp"
@@ -86,6 +88,16 @@ class RunRecorder {
       for (std::size_t k = 0; k < scene_.wave_gauges.size(); ++k)
         if (row.size() > 2 + k) keep_sensor(scene_.wave_gauges[k].name, row[0], row[2 + k]);
     walls_.resume(t_start);
+    if (cylinder()) {
+      // the body's force series: per wall D pressure, D viscous and the moment's components
+      const int per_wall = 2 * D + (D == 2 ? 1 : 3);
+      int w = 0;
+      for (std::size_t k = 0; k < scene_.walls.size(); ++k)
+        if (scene_.walls[k].name == scene_.reference.wall) w = static_cast<int>(k);
+      const std::size_t c = 2 + static_cast<std::size_t>(w * per_wall);
+      for (const auto& row : walls_.resumed_rows())
+        if (row.size() >= c + 2 * D) body_force_.push_back({row[0], row[c] + row[c + D], row[c + 1] + row[c + D + 1]});
+    }
     if (dam_break() && front_.resume(t_start * front_time_scale()))
       for (const auto& row : front_.resumed_rows())
         if (row.size() >= 2) front_points_.emplace_back(row[0], row[1]);
@@ -101,6 +113,8 @@ class RunRecorder {
       const auto forces = sim.wall_forces();
       walls_.text() << sim.time() << "," << sim.steps();
       for (const WallForce& f : forces) {
+        if (cylinder() && f.name == scene_.reference.wall)
+          body_force_.push_back({sim.time(), f.pressure[0] + f.viscous[0], f.pressure[1] + f.viscous[1]});
         for (int k = 0; k < D; ++k) walls_.text() << "," << f.pressure[k];
         for (int k = 0; k < D; ++k) walls_.text() << "," << f.viscous[k];
         for (int k = D == 2 ? 2 : 0; k < 3; ++k) walls_.text() << "," << f.moment[k];
@@ -180,6 +194,25 @@ class RunRecorder {
     errors["non_finite"] = diverged ? 1.0 : 0.0;
     if (dam_break() && !diverged)
       for (const auto& [k, v] : reference::martin_moyce_errors(front_points_)) errors[k] = v;
+    if (cylinder() && !diverged) {
+      std::vector<double> t, fx, fy;
+      for (const auto& r : body_force_) {
+        t.push_back(r[0]);
+        fx.push_back(r[1]);
+        fy.push_back(r[2]);
+      }
+      const double U = scene_.reference.velocity, Dm = scene_.reference.length;
+      const auto c = reference::force_coefficients(t, fx, fy, Dm, U, scene_.rho0, scene_.reference.from);
+      errors["cd_mean"] = c.cd_mean;
+      errors["cl_amplitude"] = c.cl_amplitude;
+      errors["strouhal"] = c.strouhal;
+      errors["shedding_periods"] = c.periods;
+      errors["cd_error"] = std::abs(c.cd_mean / reference::kCylinderRe100Cd - 1);
+      if (c.periods > 0) {
+        errors["strouhal_error"] = std::abs(c.strouhal / reference::kCylinderRe100St - 1);
+        errors["cl_amplitude_error"] = std::abs(c.cl_amplitude / reference::kCylinderRe100ClAmplitude - 1);
+      }
+    }
     if (scene_.reference.kind == ReferenceKind::SphericTest2 && !diverged) {
       const auto measured = reference::read_sensor_csv(scene_.reference.file, {"P1", "P3", "H2", "H4"});
       for (const auto& [k, v] : reference::spheric_test2_errors(measured, sensors_, scene_.reference.length, scene_.duration))
@@ -189,6 +222,7 @@ class RunRecorder {
 
  private:
   bool dam_break() const { return scene_.reference.kind == ReferenceKind::MartinMoyce; }
+  bool cylinder() const { return scene_.reference.kind == ReferenceKind::Cylinder; }
   // the open boundaries' counters at the last row (for the flux over an interval)
   void open_previous(const Simulation<D>& sim) {
     open_t_ = sim.time();
@@ -214,6 +248,7 @@ class RunRecorder {
   std::map<std::string, reference::Series> sensors_;     // spheric_test2: (t, value) of its sensors
   double max_rho_dev_ = 0, max_ke_ = 0;
   std::int64_t max_outside_ = 0;
+  std::vector<std::array<double, 3>> body_force_;  // cylinder: (t, F_x, F_y) of the body's wall
   double open_t_ = 0;
   std::vector<double> open_in_, open_out_;
 };

@@ -273,7 +273,6 @@ class Simulation {
   bool apr_on_ = false;
   OpenBoundaries<D> open_;
   Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> open_sample_;  // scratch: the mirror samples
-  double last_dt_ = 0;  // the last step's (the reference states' filter)
   Kokkos::View<double* [D], Kokkos::LayoutRight, MemSpace> guard_shift_;  // per particle: GuardSpacing's shift
   // APR with walls: the walls of each level l >= 1, their quadrature at the level's spacing
   // (3D; in 2D at the finest level's, as level 0's) and their points binned at R_l

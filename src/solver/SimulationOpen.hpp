@@ -23,7 +23,7 @@ void Simulation<D>::open_step_start() {
   PassContext<D> c = pass_context(levels().front());
   c.end = n_own_;
   scheme_.open_samples(c, open_.planes(), p_.get(field::OpenRole{}), open_sample_);
-  open_.update_references(open_sample_, p_, n_own_, last_dt_, comm());
+  open_.update_references(open_sample_, p_, n_own_, open_.last_dt(), comm());
   with_eos<D>(scene_, [&](auto eos) { open_.apply_state(eos, scene_.rho0, scene_.c0, open_sample_, p_, n_own_); });
   domain_.halos_stale();
 }

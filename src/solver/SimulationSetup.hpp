@@ -103,7 +103,7 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
   }
   if (open_.on()) {
     if (restart) open_.restore(restart->header.open);
-    else open_.start(p_, n_own_, comm().sum(static_cast<std::int64_t>(n_own_)));
+    else n_own_ = open_.start(p_, n_own_, comm().sum(static_cast<std::int64_t>(n_own_)));
   }
   with_eos<D>(scene_, [&](auto eos) {
     update_pressure<D>(eos, p_.get(field::Density{}), p_.get(field::Pressure{}), n_own_);

@@ -160,7 +160,7 @@ double Simulation<D>::step(double t_stop) {
   t_ += dt;
   ++steps_;
   stage_time_ = t_;
-  last_dt_ = dt;
+  if (open_.on()) open_.set_last_dt(dt);
   return dt;
 }
 
