@@ -10,15 +10,9 @@ namespace ondine {
 
 template <int D>
 void Simulation<D>::open_step_start() {
-  // the roles change, and particles are created and removed, when the lists are rebuilt
-  // anyway (Verlet criterion, collective): until then a particle that crossed a plane keeps
-  // its role, which is harmless for the few steps it takes (a new particle appears L upstream,
-  // at least R from the fluid; a removed one has left the buffer, beyond R of the fluid)
-  if (!domain_.lists_hold(p_.get(field::Position{}), n_own_)) {
-    bool changed = false;
-    n_own_ = open_.classify(p_, n_own_, comm(), changed);
-    if (changed) domain_.invalidate_lists();  // on every rank: particles were created or removed
-  }
+  bool changed = false;
+  n_own_ = open_.classify(p_, n_own_, comm(), changed);
+  if (changed) domain_.invalidate_lists();  // on every rank: particles were created or removed
   ensure_neighbours();
   domain_.refresh_state_halos(p_);
   if (!comm().serial()) domain_.refresh(p_, field::OpenRole{});
