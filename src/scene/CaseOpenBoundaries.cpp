@@ -42,6 +42,24 @@ void check_buffer(const Reader& r, const YAML::Node& item, const std::string& ke
     r.fail(item["position"], key + ".position", "no fluid block covers the buffer layer: extend a fluid block over it, so that the buffer starts full");
 }
 
+// the refinement zones (with their transition layers) keep clear of the buffer and of the
+// fluid the buffer particles read (the mirror points, up to L inside) and act on (R inside):
+// the particles there are coarse SPH particles
+void check_zones_clear(const Reader& r, const YAML::Node& item, const std::string& key, const Scene& s, const OpenBoundary& b) {
+  const int a = b.axis;
+  const double L = b.layers * s.dx, reach = std::max(L, s.R());
+  const double lo = b.sign > 0 ? b.position - L : b.position - reach, hi = b.sign > 0 ? b.position + reach : b.position + L;
+  for (const RefinementZone& z : s.refinement_zones) {
+    const double w = s.refinement_transition * s.R() / std::ldexp(1.0, z.level - 1);
+    if (z.box.min[a] - w < hi && z.box.max[a] + w > lo) {
+      std::ostringstream m;
+      m << "the refinement zone '" << z.name << "' (with its transition layer of " << w << " m) reaches the buffer layer or the fluid it "
+        << "works with ([" << lo << ", " << hi << "] m along " << "xyz"[a] << "): keep the zones clear of the open boundaries";
+      r.fail(item["position"], key + ".position", m.str());
+    }
+  }
+}
+
 void read_inlet(const Reader& r, const YAML::Node& item, const std::string& key, const Scene& s, OpenBoundary& b) {
   const int D = s.dimension;
   b.velocity = r.vector(r.required(item, key, "velocity"), key + ".velocity", D, " (m/s)");
@@ -71,8 +89,6 @@ void read_open_boundaries(const Reader& r, YAML::Node& root, Scene& s) {
   if (!ob.IsSequence() || ob.size() == 0) r.fail(ob, "open_boundaries", "expected a list of inlets and outlets");
   if (ob.size() > static_cast<std::size_t>(kMaxOpenBoundaries))
     r.fail(ob, "open_boundaries", "more than " + std::to_string(kMaxOpenBoundaries) + " open boundaries");
-  if (!s.refinement_zones.empty())
-    r.fail(ob, "open_boundaries", "open boundaries with refinement zones are not supported yet: run the channel uniform");
   if (s.flux == FluxScheme::Riemann && s.riemann_variant == RiemannVariant::Vila)
     r.fail(ob, "open_boundaries", "Vila's Riemann-SPH (masses that change by fluxes) is not supported with open boundaries: use scheme.riemann.variant: leduc");
   for (std::size_t i = 0; i < ob.size(); ++i) {
@@ -111,6 +127,7 @@ void read_open_boundaries(const Reader& r, YAML::Node& root, Scene& s) {
       const double olo = std::min(o.position, o.position - o.sign * o.layers * s.dx), ohi = std::max(o.position, o.position - o.sign * o.layers * s.dx);
       if (lo < ohi && olo < hi) r.fail(item["position"], key + ".position", "its buffer layer overlaps the one of '" + o.name + "'");
     }
+    check_zones_clear(r, item, key, s, b);
     s.open_boundaries.push_back(b);
   }
 }

@@ -64,6 +64,9 @@ class AdaptiveRefinement {
   const NeighbourList<D>& guard_list() const { return l_cross_; }
   const RefinementZones<D>& zones() const { return zones_; }
   std::int64_t refined() const { return refined_; }    // mothers refined so far
+  // the global id counter, which the open boundaries share for their new particles
+  std::int64_t& id_counter() { return next_id_; }
+  std::int64_t next_id() const { return next_id_; }
   std::int64_t deleted() const { return deleted_; }    // daughters deleted so far
   std::int64_t families_moved() const { return families_moved_; }  // moved off a wall (DaughterWallClearance)
   std::int64_t guard_shifts() const { return guard_shifts_; }  // daughter guards shifted (GuardSpacing), summed over steps

@@ -106,8 +106,11 @@ class OpenBoundaries {
 
   // Step start (kernels/OpenBoundary.hpp, OpenClassify): roles, particles created and removed.
   // Returns the new owned count (halos dropped where particles changed); `changed` is true on
-  // every rank when particles were created or removed on any.
-  int classify(ParticleSet<D>& p, int n, const Communicator& comm, bool& changed) {
+  // every rank when particles were created or removed on any. The new ids come from
+  // `id_counter` (with refinement zones, the one the APR daughters take theirs from), or from
+  // the boundaries' own.
+  int classify(ParticleSet<D>& p, int n, const Communicator& comm, bool& changed, std::int64_t* id_counter = nullptr) {
+    std::int64_t& next_id = id_counter ? *id_counter : next_id_;
     Kokkos::View<int*, MemSpace> action("ondine::Open::action", n), spawn_b("ondine::Open::spawn_boundary", n);
     Kokkos::deep_copy(tally_, 0.0);
     Kokkos::parallel_for("ondine::Open::classify", Kokkos::RangePolicy<ExecSpace>(0, n),
@@ -144,9 +147,9 @@ class OpenBoundaries {
     p.permute([&order](const auto& v) { return permuted(v, order); }, static_cast<std::size_t>(kept + ns));
     if (ns > 0)
       Kokkos::parallel_for("ondine::Open::spawn", Kokkos::RangePolicy<ExecSpace>(0, ns),
-                           OpenSpawnFill<D>{planes_, kept, boundary_of_spawn, source_id, all_sources, next_id_, p.get(field::Position{}),
+                           OpenSpawnFill<D>{planes_, kept, boundary_of_spawn, source_id, all_sources, next_id, p.get(field::Position{}),
                                             p.get(field::GlobalId{}), p.get(field::OpenRole{})});
-    next_id_ += created;
+    next_id += created;
     return kept + ns;
   }
 

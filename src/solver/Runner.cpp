@@ -194,7 +194,7 @@ nlohmann::json run_summary(const Scene& scene, const RunOptions& opt, const Simu
     j["open_boundaries"] = {{"boundaries", list},
                             {"particles_created", ob.created_count()},
                             {"particles_removed", ob.removed_count()},
-                            {"next_id", ob.next_id()}};
+                            {"next_id", sim.next_id()}};
   }
   j["kokkos_version"] = kokkos_version();
   j["ondine_version"] = ondine_version();

@@ -167,6 +167,9 @@ class Simulation {
   bool open_on() const { return open_.on(); }
   const OpenBoundaries<D>& open_boundaries() const { return open_; }
   CheckpointOpen open_state() const { return open_.save(); }
+  // the global id the next new particle gets (with refinement zones the APR's counter, which
+  // the open boundaries share)
+  std::int64_t next_id() const { return apr_on_ ? apr_.next_id() : open_.next_id(); }
 
   // adaptive particle refinement (only with refinement zones; docs/apr.md)
   bool refinement_on() const { return apr_on_; }
@@ -223,8 +226,10 @@ class Simulation {
   void refresh_guard_halos();       // several ranks: the interpolated fields of the guards' halo copies
   void build_level_walls();
   // open boundaries at a step start (solver/SimulationOpen.hpp): roles, particles created and
-  // removed, the buffer particles' state
-  void open_step_start();
+  // removed (before the refinement's bookkeeping, which then sorts them), then the buffer
+  // particles' state
+  void open_classify();
+  void open_buffer_state();
   // evaluation (solver/SimulationEvaluate.hpp)
   void update_walls(double t);
   bool consistent_laplacian() const;

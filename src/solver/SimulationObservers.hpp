@@ -61,13 +61,16 @@ Diagnostics Simulation<D>::diagnostics() const {
     d.kinetic_energy = 0;
     Kokkos::parallel_reduce("ondine::Diagnostics::kinetic_energy", Kokkos::RangePolicy<ExecSpace>(0, n), f, d.kinetic_energy);
   }
+  // open boundaries: the fluid region's mass is the (leaf) mass less the buffers' (a buffer
+  // particle is never refined); a buffer particle beyond the outer face is removed at the next
+  // step start
   d.fluid_mass = d.mass;
-  // open boundaries: a buffer particle beyond the outer face is removed at the next step start
   const auto role = open_.on() ? p_.get(field::OpenRole{}) : field_view_t<field::OpenRole, D>();
   if (open_.on()) {
-    d.fluid_mass = 0;
-    Kokkos::parallel_reduce("ondine::Diagnostics::fluid_mass", Kokkos::RangePolicy<ExecSpace>(0, n),
-                            KOKKOS_LAMBDA(const int i, double& s) { s += role(i) == 0 ? m(i) : 0.0; }, d.fluid_mass);
+    double buffers = 0;
+    Kokkos::parallel_reduce("ondine::Diagnostics::buffer_mass", Kokkos::RangePolicy<ExecSpace>(0, n),
+                            KOKKOS_LAMBDA(const int i, double& s) { s += role(i) != 0 ? m(i) : 0.0; }, buffers);
+    d.fluid_mass = d.mass - buffers;
   }
   const auto box = domain_.box();
   double hi[D];

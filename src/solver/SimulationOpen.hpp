@@ -9,10 +9,16 @@
 namespace ondine {
 
 template <int D>
-void Simulation<D>::open_step_start() {
+void Simulation<D>::open_classify() {
   bool changed = false;
-  n_own_ = open_.classify(p_, n_own_, comm(), changed);
-  if (changed) domain_.invalidate_lists();  // on every rank: particles were created or removed
+  n_own_ = open_.classify(p_, n_own_, comm(), changed, apr_on_ ? &apr_.id_counter() : nullptr);
+  if (!changed) return;
+  domain_.invalidate_lists();  // on every rank: particles were created or removed
+  if (apr_on_) bookkeeping_due_ = true;  // the new particles sorted by level and role
+}
+
+template <int D>
+void Simulation<D>::open_buffer_state() {
   ensure_neighbours();
   domain_.refresh_state_halos(p_);
   if (!comm().serial()) domain_.refresh(p_, field::OpenRole{});

@@ -83,6 +83,12 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
     decompose(false);
     n_own_ = domain_.migrate(p_, n_own_);
   }
+  // open boundaries: the roles, and the particles beyond the buffers dropped, before the
+  // refinement sorts the particles
+  if (open_.on()) {
+    if (restart) open_.restore(restart->header.open);
+    else n_own_ = open_.start(p_, n_own_, comm().sum(static_cast<std::int64_t>(n_own_)));
+  }
   if (apr_on_ && restart) {
     // the APR fields came with the checkpoint (load_checkpoint); the zones, counters and
     // level ranges as saved (on several ranks after the first migration: each rank sorts
@@ -100,10 +106,6 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
     apr_ = AdaptiveRefinement<D>(scene_, domain_.box(), skin_len_);
     apr_.initialise(p_, comm().sum(static_cast<std::int64_t>(n_own_)));
     for (int l = 1; l < apr_.levels(); ++l) refinement_bookkeeping();
-  }
-  if (open_.on()) {
-    if (restart) open_.restore(restart->header.open);
-    else n_own_ = open_.start(p_, n_own_, comm().sum(static_cast<std::int64_t>(n_own_)));
   }
   with_eos<D>(scene_, [&](auto eos) {
     update_pressure<D>(eos, p_.get(field::Density{}), p_.get(field::Pressure{}), n_own_);

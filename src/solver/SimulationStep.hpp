@@ -108,8 +108,9 @@ template <int D>
 double Simulation<D>::step(double t_stop) {
   output_saved_ = false;  // finish_output() after a step has nothing to put back
   if (scene_.reorder_interval > 0 && steps_ % scene_.reorder_interval == 0) domain_.reorder_by_cell(p_, n_own_);
+  if (open_.on()) open_classify();
   if (apr_on_) refinement_step_start();
-  if (open_.on()) open_step_start();
+  if (open_.on()) open_buffer_state();
   allocate_stage_storage();
   Kokkos::deep_copy(p_.get(field::StagePosition{}), p_.get(field::Position{}));
   Kokkos::deep_copy(p_.get(field::StageVelocity{}), p_.get(field::Velocity{}));
