@@ -18,9 +18,11 @@ struct TaitEos {
   KOKKOS_INLINE_FUNCTION double sound_speed(double rho) const {
     return c0 * kmath::pow(rho / rho0, 0.5 * (gamma - 1.0));
   }
-  // the inverse of pressure()
+  // the inverse of pressure(), for p above the law's floor p_b - rho0 c0^2 / gamma (clamped at
+  // 1e-3 rho0 below it: a tension the law cannot give)
   KOKKOS_INLINE_FUNCTION double density(double p) const {
-    return rho0 * kmath::pow(1.0 + gamma * (p - p_b) / (rho0 * c0 * c0), 1.0 / gamma);
+    const double q = 1.0 + gamma * (p - p_b) / (rho0 * c0 * c0);
+    return rho0 * kmath::pow(q > 1e-21 ? q : 1e-21, 1.0 / gamma);
   }
 };
 

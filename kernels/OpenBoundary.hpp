@@ -11,11 +11,12 @@
 //    joins its buffer; an outlet buffer particle beyond -L_b is removed, as is a fluid
 //    particle that flows back into an inlet's buffer. The masses that cross each
 //    plane are summed (mass in/out of the fluid region, exactly the particles' masses).
-//  - MirrorSample: the fluid's Shepard state (2.40) at each buffer particle's mirror point
-//    x - 2 depth n, over fluid particles only.
+//  - FacetSample: the fluid's Shepard state (2.40) at each facet's sample point (a dx-wide
+//    square of the plane, its centre moved R/2 into the fluid), over fluid particles only:
+//    the state the buffer particles of that facet extrapolate (zeroth order along n).
 //  - BufferState: the buffer particle's state. Non-reflecting (characteristic conditions in
 //    the spirit of Lastiwka et al. 2009, linear acoustics along the normal n into the fluid):
-//    the invariant leaving the fluid, J_out = p_m - rho0 c0 u_m.n, comes from the mirror
+//    the invariant leaving the fluid, J_out = p_m - rho0 c0 u_m.n, comes from the facet's
 //    sample; the one entering it is set so that its mean over the facet's relaxation time
 //    gives the imposed quantity: J_in = <J_out> + 2 rho0 c0 U.n at an inlet (mean velocity U),
 //    J_in = 2 p_out - <J_out> at an outlet (mean pressure p_out), <J_out> the facet's filtered
@@ -24,7 +25,7 @@
 //    follow it); variations slower than the relaxation time see a velocity inlet and a
 //    pressure outlet.
 //    Otherwise (reflecting): inlet u imposed, p = p_m; outlet u = u_m, p imposed.
-//    The tangential velocity is the imposed one at an inlet, the mirror's at an outlet.
+//    The tangential velocity is the imposed one at an inlet, the sample's at an outlet.
 //  - ZeroBufferRates (after each evaluation): the buffer particles are not integrated, they
 //    move with their step-start velocity.
 #include "kernels/CellList.hpp"
@@ -222,7 +223,7 @@ struct OpenInitialRoles {
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<D> xi = load<D>(x, i);
     int r = 0, k = 1;
-    for (int b = 0; b < planes.count; ++b) {
+    for (int b = planes.count - 1; b >= 0; --b) {  // the first boundary behind which it lies, as OpenClassify
       const double d = planes.depth(b, xi);
       if (d < 0) r = b + 1;
       if (d < -planes.L[b]) k = 0;
@@ -232,57 +233,38 @@ struct OpenInitialRoles {
   }
 };
 
-// the fluid's Shepard state at each buffer particle's mirror point: p, u, and the Shepard sum
+// the fluid's Shepard sums (2.40) at each facet's sample point, R/2 inside the fluid from the
+// facet's centre, over the fluid particles this rank owns (the ranks' sums are added: a point
+// outside a rank's cells is farther than R from its particles): w, w p, w u_k per facet
 template <int D, class Kernel>
-struct MirrorSample {
-  OpenPlanes<D> planes;
+struct FacetSample {
   CellList<D> cells;
   PeriodicBox<D> box;
   Kernel W;
   double R2;
+  int owned;
+  Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> points;
   field_view_t<field::Position, D> x;
   field_view_t<field::Velocity, D> u;
   field_view_t<field::Density, D> rho;
   field_view_t<field::Pressure, D> P;
   field_view_t<field::Mass, D> m;
   field_view_t<field::OpenRole, D> role;
-  Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> sample;  // n x (D + 2): u, p, Shepard sum
+  Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> sums;  // facets x (D + 2)
 
-  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
-    if (role(i) == 0) return;
-    const int b = role(i) - 1;
-    Vec<D> xm = load<D>(x, i);
-    xm[planes.axis[b]] -= 2.0 * planes.sign[b] * planes.depth(b, xm);
+  KOKKOS_INLINE_FUNCTION void operator()(const int f) const {
+    const Vec<D> xs = load<D>(points, f);
     double s = 0, p = 0, us[D] = {};
-    for_each_point_within<D>(cells, box, x, xm, R2, [&](const int j, const Vec<D>&, const double r) {
-      if (role(j) != 0) return;
+    for_each_point_within<D>(cells, box, x, xs, R2, [&](const int j, const Vec<D>&, const double r) {
+      if (j >= owned || role(j) != 0) return;
       const double w = m(j) / rho(j) * W.value(r);
       s += w;
       p += w * P(j);
       for (int k = 0; k < D; ++k) us[k] += w * u(j, k);
     });
-    const double inv = s > 0 ? 1.0 / s : 0.0;
-    for (int k = 0; k < D; ++k) sample(i, k) = us[k] * inv;
-    sample(i, D) = p * inv;
-    sample(i, D + 1) = s;
-  }
-};
-
-// per facet: the sums of the mirror pressure, normal velocity and count of its buffer particles
-template <int D>
-struct FacetSums {
-  OpenPlanes<D> planes;
-  field_view_t<field::Position, D> x;
-  field_view_t<field::OpenRole, D> role;
-  Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> sample;
-  Kokkos::View<double* [3], Kokkos::LayoutRight, MemSpace> sums;
-  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
-    if (role(i) == 0 || sample(i, D + 1) <= 0.5) return;  // a mirror point with too little fluid around it
-    const int b = role(i) - 1;
-    const int f = planes.facet(b, load<D>(x, i));
-    Kokkos::atomic_add(&sums(f, 0), sample(i, D));
-    Kokkos::atomic_add(&sums(f, 1), sample(i, planes.axis[b]) * planes.sign[b]);
-    Kokkos::atomic_add(&sums(f, 2), 1.0);
+    sums(f, 0) = s;
+    sums(f, 1) = p;
+    for (int k = 0; k < D; ++k) sums(f, 2 + k) = us[k];
   }
 };
 
@@ -297,29 +279,29 @@ struct BufferState {
   field_view_t<field::Density, D> rho;
   field_view_t<field::Pressure, D> P;
   field_view_t<field::OpenRole, D> role;
-  Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> sample;
-  Kokkos::View<double* [2], Kokkos::LayoutRight, MemSpace> reference;  // per facet: filtered p, u.n
+  // per facet: the fluid's state at its sample point now (p, u_0 .. u_D-1) and the filtered
+  // invariant leaving the fluid, <J_out>
+  Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> state;
+  Kokkos::View<double*, MemSpace> J_mean;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     if (role(i) == 0) return;
     const int b = role(i) - 1, a = planes.axis[b];
     const double sg = planes.sign[b];
     const Vec<D> xi = load<D>(x, i);
-    const bool sampled = sample(i, D + 1) > 0.5;
-    Vec<D> um;
-    for (int k = 0; k < D; ++k) um[k] = sampled ? sample(i, k) : u(i, k);
-    const double pm = sampled ? sample(i, D) : P(i);
     const int f = planes.facet(b, xi);
+    Vec<D> um;
+    for (int k = 0; k < D; ++k) um[k] = state(f, 1 + k);
+    const double pm = state(f, 0);
     double p, un;
     Vec<D> ut;  // the velocity whose tangential components the particle takes
-    // the invariant leaving the fluid, now and filtered over the facet's relaxation time
+    // the invariant leaving the fluid, now (its mean over the relaxation time: J_mean(f))
     const double J_out = pm - rho0 * c0 * um[a] * sg;
-    const double J_mean = reference(f, 0) - rho0 * c0 * reference(f, 1);
     if (planes.inlet[b]) {
       ut = planes.imposed_velocity(b, xi);
       const double u_ref = ut[a] * sg;
       if (planes.non_reflecting[b]) {
-        const double J_in = J_mean + 2.0 * rho0 * c0 * u_ref;  // the mean of u.n is u_ref
+        const double J_in = J_mean(f) + 2.0 * rho0 * c0 * u_ref;  // the mean of u.n is u_ref
         p = 0.5 * (J_in + J_out);
         un = 0.5 * (J_in - J_out) / (rho0 * c0);
       } else {
@@ -329,7 +311,7 @@ struct BufferState {
     } else {
       ut = um;
       if (planes.non_reflecting[b]) {
-        const double J_in = 2.0 * planes.pressure[b] - J_mean;  // the mean of p is the imposed pressure
+        const double J_in = 2.0 * planes.pressure[b] - J_mean(f);  // the mean of p is the imposed pressure
         p = 0.5 * (J_in + J_out);
         un = 0.5 * (J_in - J_out) / (rho0 * c0);
       } else {
@@ -341,6 +323,26 @@ struct BufferState {
     u(i, a) = un * sg;
     rho(i) = eos.density(p);
     P(i) = p;
+  }
+};
+
+// after a shifting pass: the buffer particles keep their state and position (their lanes)
+template <int D>
+struct KeepBuffers {
+  field_view_t<field::OpenRole, D> role;
+  field_view_t<field::Position, D> x;
+  field_view_t<field::Velocity, D> u;
+  field_view_t<field::Density, D> rho;
+  field_view_t<field::Position, D> x_out;
+  field_view_t<field::Velocity, D> u_out;
+  field_view_t<field::Density, D> rho_out;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    if (role(i) == 0) return;
+    for (int k = 0; k < D; ++k) {
+      x_out(i, k) = x(i, k);
+      u_out(i, k) = u(i, k);
+    }
+    rho_out(i) = rho(i);
   }
 };
 

@@ -308,6 +308,9 @@ TEST_CASE("open boundaries: bad input is refused with the key and what was expec
   CHECK_THAT(refusal(y, {"open_boundaries.1.name=inlet"}), Contains("duplicate open boundary name"));
   CHECK_THAT(refusal(y, {"open_boundaries.1.type=sink"}), Contains("open_boundaries[1].type"));
   CHECK_THAT(refusal(y, {"open_boundaries.0.profile=parabolic"}), Contains("profile_axis"));
+  CHECK_THAT(refusal(y, {"open_boundaries.1.normal=[1,0]"}), Contains("do not overlap"));
+  CHECK_THAT(refusal(y + "refinement:\n  zones:\n    - {name: z, min: [0.5, 0.1], max: [1.0, 0.4], velocity: [1.0, 0.0]}\n", {}),
+             Contains("moves"));
   CHECK_THAT(refusal(y, {"scheme.flux=riemann", "scheme.delta_sph=0", "scheme.riemann.variant=vila"}), Contains("Vila"));
   CHECK(refusal(y + "refinement:\n  zones:\n    - {name: z, min: [0.5, 0.1], max: [1.0, 0.4]}\n", {}) == "accepted");
   CHECK_THAT(refusal(y + "refinement:\n  zones:\n    - {name: z, min: [0.05, 0.1], max: [1.0, 0.4]}\n", {}),

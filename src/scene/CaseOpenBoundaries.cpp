@@ -43,13 +43,16 @@ void check_buffer(const Reader& r, const YAML::Node& item, const std::string& ke
 }
 
 // the refinement zones (with their transition layers) keep clear of the buffer and of the
-// fluid the buffer particles read (the mirror points, up to L inside) and act on (R inside):
+// fluid the buffer particles act on (within R of the plane) and read (the facets' sample
+// points R/2 inside, with their supports): 1.5 R, and no zone moves (it could drift there);
 // the particles there are coarse SPH particles
 void check_zones_clear(const Reader& r, const YAML::Node& item, const std::string& key, const Scene& s, const OpenBoundary& b) {
   const int a = b.axis;
-  const double L = b.layers * s.dx, reach = std::max(L, s.R());
+  const double L = b.layers * s.dx, reach = 1.5 * s.R();
   const double lo = b.sign > 0 ? b.position - L : b.position - reach, hi = b.sign > 0 ? b.position + reach : b.position + L;
   for (const RefinementZone& z : s.refinement_zones) {
+    if (z.motion != ZoneMotion::Static)
+      r.fail(item, key, "the refinement zone '" + z.name + "' moves: open boundaries take static zones only (a moving zone could reach a buffer)");
     const double w = s.refinement_transition * s.R() / std::ldexp(1.0, z.level - 1);
     if (z.box.min[a] - w < hi && z.box.max[a] + w > lo) {
       std::ostringstream m;
@@ -128,6 +131,16 @@ void read_open_boundaries(const Reader& r, YAML::Node& root, Scene& s) {
       if (lo < ohi && olo < hi) r.fail(item["position"], key + ".position", "its buffer layer overlaps the one of '" + o.name + "'");
     }
     check_zones_clear(r, item, key, s, b);
+    // the boundaries face each other: each plane lies on the fluid side of the others
+    for (const OpenBoundary& o : s.open_boundaries)
+      if (o.sign * (b.position - o.position) <= 0 || b.sign * (o.position - b.position) <= 0)
+        r.fail(item["normal"], key + ".normal",
+               "the fluid side of '" + b.name + "' and that of '" + o.name + "' do not overlap: each normal must point towards the other plane");
+    // the fluid side holds fluid: the plane is not at the domain's face it faces
+    {
+      const double inner = b.sign > 0 ? s.domain.max[b.axis] - b.position : b.position - s.domain.min[b.axis];
+      if (inner < b.layers * s.dx) r.fail(item["normal"], key + ".normal", "the normal must point into the domain, towards the fluid");
+    }
     s.open_boundaries.push_back(b);
   }
 }

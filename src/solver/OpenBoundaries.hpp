@@ -52,11 +52,22 @@ class OpenBoundaries {
       P.pressure[b] = o.pressure + s.eos_background_pressure;  // in the EOS's scale
       P.facet0[b] = facets;
       int nf = 1, t = 0;
+      // the facets centred on the lattice's lanes: their grid starts from the lattice origin
+      // of the fluid block that fills the buffer, stepped back to cover the domain
+      const FluidBlock* fill = &s.blocks.front();
+      for (const FluidBlock& f : s.blocks) {
+        const double lo = std::min(o.position, o.position - o.sign * o.layers * s.dx);
+        if (f.box.min[o.axis] <= lo + 1e-9 * s.dx && f.box.max[o.axis] >= lo + o.layers * s.dx - 1e-9 * s.dx) {
+          fill = &f;
+          break;
+        }
+      }
       for (int k = 0; k < D; ++k) {
         if (k == o.axis) continue;
         P.t_axis[b][t] = k;
-        P.t_lo[b][t] = s.domain.min[k];
-        P.nf[b][t] = std::max(1, static_cast<int>(std::ceil((s.domain.max[k] - s.domain.min[k]) / s.dx - 1e-9)));
+        const double origin = fill->box.min[k];
+        P.t_lo[b][t] = origin - std::ceil((origin - s.domain.min[k]) / s.dx - 1e-9) * s.dx;
+        P.nf[b][t] = std::max(1, static_cast<int>(std::ceil((s.domain.max[k] - P.t_lo[b][t]) / s.dx - 1e-9)));
         nf *= P.nf[b][t];
         ++t;
       }
@@ -64,10 +75,40 @@ class OpenBoundaries {
       flux_.push_back({o.name});
     }
     facets_ = facets;
-    reference_ = decltype(reference_)("ondine::Open::reference", facets);
-    facet_sums_ = decltype(facet_sums_)("ondine::Open::facet_sums", facets);
-    ref_host_.assign(static_cast<std::size_t>(3 * facets), 0.0);  // p, u.n, seen
+    points_ = decltype(points_)("ondine::Open::facet_points", facets);
+    state_ = decltype(state_)("ondine::Open::facet_state", facets, 1 + D);
+    J_mean_ = decltype(J_mean_)("ondine::Open::J_mean", facets);
+    sums_ = decltype(sums_)("ondine::Open::facet_sums", facets, 2 + D);
+    // per facet: <J_out>, whether it has been sampled, the last state (p, u); the sample points
+    // R/2 inside the fluid from the facets' centres; before any sample, the imposed state
+    host_.assign(static_cast<std::size_t>(kPerFacet * facets), 0.0);
+    auto hp = Kokkos::create_mirror_view(points_);
+    for (int b = 0; b < P.count; ++b) {
+      const OpenBoundary& o = scene_[static_cast<std::size_t>(b)];
+      const int f0 = P.facet0[b], nf = D == 2 ? P.nf[b][0] : P.nf[b][0] * P.nf[b][1];
+      for (int f = 0; f < nf; ++f) {
+        Vec<D> c;
+        c[o.axis] = o.position + o.sign * 0.5 * s.R();
+        const int c0 = D == 2 ? f : f % P.nf[b][0], c1 = D == 2 ? 0 : f / P.nf[b][0];
+        c[P.t_axis[b][0]] = P.t_lo[b][0] + (c0 + 0.5) * s.dx;
+        if (D == 3) c[P.t_axis[b][1]] = P.t_lo[b][1] + (c1 + 0.5) * s.dx;
+        for (int k = 0; k < D; ++k) hp(f0 + f, k) = c[k];
+        double* h = &host_[static_cast<std::size_t>(kPerFacet * (f0 + f))];
+        const Vec<D> U = P.imposed_velocity(b, c);
+        h[2] = P.pressure[b];  // an outlet's; an inlet's is the background pressure
+        if (P.inlet[b]) h[2] = s.eos_background_pressure;
+        for (int k = 0; k < D; ++k) h[3 + k] = P.inlet[b] ? U[k] : 0.0;
+        h[0] = h[2] - s.rho0 * s.c0 * h[3 + o.axis] * o.sign;
+      }
+    }
+    Kokkos::deep_copy(points_, hp);
+    upload();
+    rho0_c0_ = s.rho0 * s.c0;
     tally_ = OpenTally("ondine::Open::tally", P.count);
+    // what a checkpoint must match: each boundary's kind, axis, side, plane and thickness
+    for (const OpenBoundary& o : scene_)
+      for (double v : {o.kind == OpenKind::Inlet ? 1.0 : 0.0, double(o.axis), double(o.sign), o.position, double(o.layers)})
+        geometry_.push_back(v);
   }
 
   bool on() const { return planes_.count > 0; }
@@ -153,50 +194,55 @@ class OpenBoundaries {
     return kept + ns;
   }
 
-  // Each facet's reference state: the mean of its buffer particles' mirror samples this step,
-  // filtered over the boundary's relaxation time (the first samples set it).
-  void update_references(const Kokkos::View<double**, Kokkos::LayoutRight, MemSpace>& sample, const ParticleSet<D>& p, int n,
-                         double dt, const Communicator& comm) {
-    Kokkos::deep_copy(facet_sums_, 0.0);
-    Kokkos::parallel_for("ondine::Open::facet_sums", Kokkos::RangePolicy<ExecSpace>(0, n),
-                         FacetSums<D>{planes_, p.get(field::Position{}), p.get(field::OpenRole{}), sample, facet_sums_});
-    auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), facet_sums_);
-    std::vector<double> v(static_cast<std::size_t>(3 * facets_));
+  // The facets' sample points, on the device (FacetSample)
+  const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& facet_points() const { return points_; }
+  const Kokkos::View<double**, Kokkos::LayoutRight, MemSpace>& facet_sums() const { return sums_; }
+
+  // Each facet's state from this step's sums (all ranks): p and u where the Shepard sum is 1/2
+  // or more (the last state otherwise), and <J_out> filtered over the boundary's relaxation
+  // time (the first sample sets it). A host loop over facets, not particles.
+  void update_facets(double dt, const Communicator& comm) {
+    auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sums_);
+    std::vector<double> v(static_cast<std::size_t>((2 + D) * facets_));
     for (int f = 0; f < facets_; ++f)
-      for (int c = 0; c < 3; ++c) v[static_cast<std::size_t>(3 * f + c)] = h(f, c);
+      for (int c = 0; c < 2 + D; ++c) v[static_cast<std::size_t>((2 + D) * f + c)] = h(f, c);
     comm.sum_in_place(v);
-    auto ref = Kokkos::create_mirror_view(reference_);
     for (int b = 0; b < planes_.count; ++b) {
       const int f0 = planes_.facet0[b], f1 = b + 1 < planes_.count ? planes_.facet0[b + 1] : facets_;
       const double a = std::min(1.0, dt / scene_[static_cast<std::size_t>(b)].relaxation_time);
+      const int ax = planes_.axis[b];
       for (int f = f0; f < f1; ++f) {
-        double* r = &ref_host_[static_cast<std::size_t>(3 * f)];
-        const double cnt = v[3 * f + 2];
-        if (cnt > 0) {
-          const double pm = v[3 * f] / cnt, um = v[3 * f + 1] / cnt;
-          if (r[2] == 0) {
-            r[0] = pm;
-            r[1] = um;
-            r[2] = 1;
-          } else {
-            r[0] += a * (pm - r[0]);
-            r[1] += a * (um - r[1]);
-          }
+        const double* sf = &v[static_cast<std::size_t>((2 + D) * f)];
+        double* r = &host_[static_cast<std::size_t>(kPerFacet * f)];
+        if (sf[0] < 0.5) continue;  // too little fluid at the point: the last state holds
+        r[2] = sf[1] / sf[0];
+        for (int k = 0; k < D; ++k) r[3 + k] = sf[2 + k] / sf[0];
+        const double J = r[2] - rho0_c0_ * r[3 + ax] * planes_.sign[b];
+        if (r[1] == 0) {
+          r[0] = J;
+          r[1] = 1;
+        } else {
+          r[0] += a * (J - r[0]);
         }
-        ref(f, 0) = r[0];
-        ref(f, 1) = r[1];
       }
     }
-    Kokkos::deep_copy(reference_, ref);
+    upload();
   }
 
   template <class Eos>
-  void apply_state(const Eos& eos, double rho0, double c0, const Kokkos::View<double**, Kokkos::LayoutRight, MemSpace>& sample,
-                   ParticleSet<D>& p, int n) const {
+  void apply_state(const Eos& eos, double rho0, double c0, ParticleSet<D>& p, int n) const {
     Kokkos::parallel_for("ondine::Open::buffer_state", Kokkos::RangePolicy<ExecSpace>(0, n),
                          BufferState<D, Eos>{planes_, eos, rho0, c0, p.get(field::Position{}), p.get(field::Velocity{}),
-                                             p.get(field::Density{}), p.get(field::Pressure{}), p.get(field::OpenRole{}), sample,
-                                             reference_});
+                                             p.get(field::Density{}), p.get(field::Pressure{}), p.get(field::OpenRole{}), state_,
+                                             J_mean_});
+  }
+
+  // after a shifting pass into (x_out, u_out, rho_out): the buffer particles [first, end) as they were
+  void keep_buffers(const ParticleSet<D>& p, int first, int end, const field_view_t<field::Position, D>& x_out,
+                    const field_view_t<field::Velocity, D>& u_out, const field_view_t<field::Density, D>& rho_out) const {
+    Kokkos::parallel_for("ondine::Open::keep_buffers", Kokkos::RangePolicy<ExecSpace>(first, end),
+                         KeepBuffers<D>{p.get(field::OpenRole{}), p.get(field::Position{}), p.get(field::Velocity{}),
+                                        p.get(field::Density{}), x_out, u_out, rho_out});
   }
 
   void zero_rates(const ParticleSet<D>& p, int n) const {
@@ -213,16 +259,18 @@ class OpenBoundaries {
     c.state = {static_cast<double>(created_count_), static_cast<double>(removed_count_), initial_mass_, initial_fluid_mass_, last_dt_};
     for (const OpenFlux& f : flux_)
       for (double v : {f.mass_in, f.mass_out, f.created, f.removed}) c.state.push_back(v);
-    c.state.insert(c.state.end(), ref_host_.begin(), ref_host_.end());
+    c.state.insert(c.state.end(), host_.begin(), host_.end());
+    c.state.insert(c.state.end(), geometry_.begin(), geometry_.end());
     return c;
   }
   // throws std::runtime_error when the state does not fit these boundaries
   void restore(const CheckpointOpen& c) {
-    const std::size_t want = 5 + 4 * flux_.size() + ref_host_.size();
-    if (!c.present || c.state.size() != want)
-      throw std::runtime_error("the checkpoint's open-boundary state (attribute open_state) has " + std::to_string(c.state.size()) +
-                               " values; the case's open boundaries need " + std::to_string(want) +
-                               " (the open_boundaries of the case are not those of the run that wrote it)");
+    const std::size_t want = 5 + 4 * flux_.size() + host_.size() + geometry_.size();
+    const bool same = c.present && c.state.size() == want &&
+                      std::equal(geometry_.begin(), geometry_.end(), c.state.end() - static_cast<std::ptrdiff_t>(geometry_.size()));
+    if (!same)
+      throw std::runtime_error("the checkpoint's open boundaries (attribute open_state) are not the case's: a restart needs the "
+                               "same open_boundaries (type, normal, position, layers and the domain across them)");
     next_id_ = c.next_id;
     created_count_ = static_cast<std::int64_t>(c.state[0]);
     removed_count_ = static_cast<std::int64_t>(c.state[1]);
@@ -236,22 +284,34 @@ class OpenBoundaries {
       f.created = c.state[k++];
       f.removed = c.state[k++];
     }
-    std::copy(c.state.begin() + static_cast<std::ptrdiff_t>(k), c.state.end(), ref_host_.begin());
-    auto ref = Kokkos::create_mirror_view(reference_);
-    for (int f = 0; f < facets_; ++f) {
-      ref(f, 0) = ref_host_[static_cast<std::size_t>(3 * f)];
-      ref(f, 1) = ref_host_[static_cast<std::size_t>(3 * f + 1)];
-    }
-    Kokkos::deep_copy(reference_, ref);
+    std::copy(c.state.begin() + static_cast<std::ptrdiff_t>(k), c.state.begin() + static_cast<std::ptrdiff_t>(k + host_.size()),
+              host_.begin());
+    upload();
   }
 
  private:
+  static constexpr int kPerFacet = 3 + D;  // <J_out>, sampled, p, u
+  // the facets' state and <J_out> to the device
+  void upload() {
+    auto hs = Kokkos::create_mirror_view(state_);
+    auto hj = Kokkos::create_mirror_view(J_mean_);
+    for (int f = 0; f < facets_; ++f) {
+      const double* r = &host_[static_cast<std::size_t>(kPerFacet * f)];
+      hj(f) = r[0];
+      for (int c = 0; c < 1 + D; ++c) hs(f, c) = r[2 + c];
+    }
+    Kokkos::deep_copy(state_, hs);
+    Kokkos::deep_copy(J_mean_, hj);
+  }
+
   std::vector<OpenBoundary> scene_;
   OpenPlanes<D> planes_;
   int facets_ = 0;
-  Kokkos::View<double* [2], Kokkos::LayoutRight, MemSpace> reference_;
-  Kokkos::View<double* [3], Kokkos::LayoutRight, MemSpace> facet_sums_;
-  std::vector<double> ref_host_;
+  double rho0_c0_ = 0;
+  Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> points_;
+  Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> state_, sums_;
+  Kokkos::View<double*, MemSpace> J_mean_;
+  std::vector<double> host_, geometry_;
   OpenTally tally_;
   std::vector<OpenFlux> flux_;
   std::int64_t next_id_ = 0, created_count_ = 0, removed_count_ = 0;

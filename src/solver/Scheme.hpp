@@ -79,10 +79,10 @@ struct CompiledScheme {
   // the Shepard sum of each wave-gauge sample point
   void (*gauge_sums)(const PassContext<D>&, const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& points,
                      const Kokkos::View<double*, MemSpace>& sums) = nullptr;
-  // open boundaries: the fluid's Shepard state at each buffer particle's mirror point
-  // (kernels/OpenBoundary.hpp, MirrorSample), over the particles [0, ctx.end)
-  void (*open_samples)(const PassContext<D>&, const OpenPlanes<D>&, const field_view_t<field::OpenRole, D>& role,
-                       const Kokkos::View<double**, Kokkos::LayoutRight, MemSpace>& sample) = nullptr;
+  // open boundaries: the fluid's Shepard sums at each facet's sample point over the owned
+  // fluid particles [0, ctx.end) (kernels/OpenBoundary.hpp, FacetSample)
+  void (*open_samples)(const PassContext<D>&, const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& points,
+                       const field_view_t<field::OpenRole, D>& role, const Kokkos::View<double**, Kokkos::LayoutRight, MemSpace>& sums) = nullptr;
   // the pressure and viscous traction at each wall point (columns 0..D-1, D..2D-1)
   void (*wall_traction)(const PassContext<D>&, const Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace>& traction) = nullptr;
   // the guard spacing shifts of one level's guards [ctx.first, ctx.end) (refinement zones)

@@ -146,12 +146,12 @@ void gauge_sums(const PassContext<D>& c, const Kokkos::View<double* [D], Kokkos:
                          GaugeShepardSum<D, K>{c.cells, c.box, K(c.R), c.R * c.R, c.end, c.x, c.rho, c.m, points, sums});
 }
 
-// the fluid's state at the buffer particles' mirror points (kernels/OpenBoundary.hpp)
+// the fluid's Shepard sums at the open boundaries' facet points (kernels/OpenBoundary.hpp)
 template <int D, class K>
-void open_samples(const PassContext<D>& c, const OpenPlanes<D>& planes, const field_view_t<field::OpenRole, D>& role,
-                  const Kokkos::View<double**, Kokkos::LayoutRight, MemSpace>& sample) {
-  Kokkos::parallel_for("ondine::Open::mirror_sample", Kokkos::RangePolicy<ExecSpace>(0, c.end),
-                       MirrorSample<D, K>{planes, c.cells, c.box, K(c.R), c.R * c.R, c.x, c.u, c.rho, c.P, c.m, role, sample});
+void open_samples(const PassContext<D>& c, const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& points,
+                  const field_view_t<field::OpenRole, D>& role, const Kokkos::View<double**, Kokkos::LayoutRight, MemSpace>& sums) {
+  Kokkos::parallel_for("ondine::Open::facet_sample", Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(points.extent(0))),
+                       FacetSample<D, K>{c.cells, c.box, K(c.R), c.R * c.R, c.end, points, c.x, c.u, c.rho, c.P, c.m, role, sums});
 }
 
 // the traction of the fluid at each wall point (kernels/WallForces.hpp)

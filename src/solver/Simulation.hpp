@@ -277,7 +277,6 @@ class Simulation {
   AdaptiveRefinement<D> apr_;
   bool apr_on_ = false;
   OpenBoundaries<D> open_;
-  Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> open_sample_;  // scratch: the mirror samples
   Kokkos::View<double* [D], Kokkos::LayoutRight, MemSpace> guard_shift_;  // per particle: GuardSpacing's shift
   // APR with walls: the walls of each level l >= 1, their quadrature at the level's spacing
   // (3D; in 2D at the finest level's, as level 0's) and their points binned at R_l

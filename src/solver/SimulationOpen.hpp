@@ -1,8 +1,8 @@
 #pragma once
 // Simulation<D>: open boundaries at a step start (kernels/OpenBoundary.hpp): the roles and
 // the particles created and removed (OpenBoundaries::classify), then, on the lists of the
-// new particle set, the fluid's state at each buffer particle's mirror point, the facets'
-// reference states and the buffer particles' state. Included by SimulationImpl.hpp only.
+// new particle set, the fluid's state at each facet's sample point, the facets' filtered
+// invariants and the buffer particles' state. Included by SimulationImpl.hpp only.
 #include "solver/KernelDispatch.hpp"
 #include "solver/Simulation.hpp"
 
@@ -24,13 +24,12 @@ void Simulation<D>::open_buffer_state() {
   if (!comm().serial()) domain_.refresh(p_, field::OpenRole{});
   const int n_all = static_cast<int>(p_.size());
   with_eos<D>(scene_, [&](auto eos) { update_pressure<D>(eos, p_.get(field::Density{}), p_.get(field::Pressure{}), n_all); });
-  if (static_cast<int>(open_sample_.extent(0)) < n_own_)
-    open_sample_ = decltype(open_sample_)("ondine::Open::sample", n_own_ + n_own_ / 8 + 16, D + 2);
   PassContext<D> c = pass_context(levels().front());
   c.end = n_own_;
-  scheme_.open_samples(c, open_.planes(), p_.get(field::OpenRole{}), open_sample_);
-  open_.update_references(open_sample_, p_, n_own_, open_.last_dt(), comm());
-  with_eos<D>(scene_, [&](auto eos) { open_.apply_state(eos, scene_.rho0, scene_.c0, open_sample_, p_, n_own_); });
+  c.R = R_;  // level 0's: the particles near the open boundaries are coarse
+  scheme_.open_samples(c, open_.facet_points(), p_.get(field::OpenRole{}), open_.facet_sums());
+  open_.update_facets(open_.last_dt(), comm());
+  with_eos<D>(scene_, [&](auto eos) { open_.apply_state(eos, scene_.rho0, scene_.c0, p_, n_own_); });
   domain_.halos_stale();
 }
 

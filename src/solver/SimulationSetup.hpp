@@ -104,7 +104,8 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
     // level creates the daughters of each nested level in turn (on several ranks,
     // after the first decomposition: each rank refines the particles it owns)
     apr_ = AdaptiveRefinement<D>(scene_, domain_.box(), skin_len_);
-    apr_.initialise(p_, comm().sum(static_cast<std::int64_t>(n_own_)));
+    // ids from the fill's count on (the open boundaries may have dropped particles since)
+    apr_.initialise(p_, open_.on() ? open_.next_id() : comm().sum(static_cast<std::int64_t>(n_own_)));
     for (int l = 1; l < apr_.levels(); ++l) refinement_bookkeeping();
   }
   with_eos<D>(scene_, [&](auto eos) {

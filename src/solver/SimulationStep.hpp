@@ -184,23 +184,8 @@ void Simulation<D>::shift_particles() {
   }
   const PassContext<D> c = pass_context(levels().front());
   scheme_.shifting(c, shifted_x_, shifted_u_, shifted_rho_, 0.02 * scene_.dx);  // at most 0.02 dx per step (kernels/ShiftingPass.hpp)
-  if (open_.on()) {  // the buffer layers keep their lattice and state (kernels/OpenBoundary.hpp)
-    const auto role = p_.get(field::OpenRole{});
-    const auto x = p_.get(field::Position{});
-    const auto u = p_.get(field::Velocity{});
-    const auto rho = p_.get(field::Density{});
-    const auto sx = shifted_x_;
-    const auto su = shifted_u_;
-    const auto srho = shifted_rho_;
-    Kokkos::parallel_for("ondine::Open::keep_buffers", Kokkos::RangePolicy<ExecSpace>(c.first, c.end), KOKKOS_LAMBDA(const int i) {
-      if (role(i) == 0) return;
-      for (int k = 0; k < D; ++k) {
-        sx(i, k) = x(i, k);
-        su(i, k) = u(i, k);
-      }
-      srho(i) = rho(i);
-    });
-  }
+  // the buffer layers keep their lattice and state (kernels/OpenBoundary.hpp)
+  if (open_.on()) open_.keep_buffers(p_, c.first, c.end, shifted_x_, shifted_u_, shifted_rho_);
   // the shifted particles [first, end) back into the state
   const auto owned = std::make_pair(static_cast<std::size_t>(c.first), static_cast<std::size_t>(c.end));
   Kokkos::deep_copy(Kokkos::subview(p_.get(field::Position{}), owned, Kokkos::ALL), Kokkos::subview(shifted_x_, owned, Kokkos::ALL));
