@@ -47,32 +47,72 @@ def ghia(src, name, column):
     return t[keys[0]], t[keys[column]]
 
 
-def error_panel(ax, rs):
-    # the bounded errors, and the relative errors shown without a bound (name *_error, not a
-    # time); the stability figures (max_*, counts) only where a case has no accuracy error
+STABILITY = {"max_density_deviation", "max_kinetic_energy_ratio", "max_outside_domain", "non_finite", "wall_crossings", "wall_leaks"}
+
+
+def error_names(rs):
+    """The bounded errors, and the relative errors shown without a bound (name *_error, not a
+    time); the stability figures (max_*, counts) only where a case has no accuracy error."""
     bounded = {k for r in rs for k in r["thresholds"] if r["errors"].get(k, 0) > 0}
     shown = {k for r in rs for k in r["errors"] if k.endswith("_error") and not k.endswith("time_error") and r["errors"][k] > 0}
-    stability = {"max_density_deviation", "max_kinetic_energy_ratio", "max_outside_domain", "non_finite", "wall_crossings", "wall_leaks"}
     names = bounded | shown
-    if names - stability:
-        names -= stability
-    names = sorted(names)
-    for name in names:
-        pts = [(r["wall_seconds"], r["errors"][name]) for r in rs if r["errors"].get(name, 0) > 0]
-        ax.loglog(*zip(*pts), "o-", label=name)
-        if len(pts) == 1:
-            ax.annotate(f"{pts[0][1]:.3g}", pts[0], fontsize=7)
-        # APR comparisons: name each point (coarse uniform, APR, fine uniform)
-        for r in rs:
-            if r.get("variant") and r["errors"].get(name, 0) > 0:
-                ax.annotate(r["variant"], (r["wall_seconds"], r["errors"][name]), fontsize=7,
-                            xytext=(3, 3), textcoords="offset points")
+    if names - STABILITY:
+        names -= STABILITY
+    return sorted(names)
+
+
+def by_scheme(rs):
+    """The runs of one case by the scheme asked (flux, transport), each the full level's runs where
+    there are some, else the quick level's; the case file's own scheme first."""
+    groups = {}
+    for r in rs:
+        groups.setdefault((r.get("flux", "case"), r.get("transport", "case")), []).append(r)
+    out = {}
+    for key in sorted(groups, key=lambda k: k != ("case", "case")):
+        g = groups[key]
+        full = [r for r in g if r.get("level", "full") == "full"]
+        out[key] = full or g
+    return out
+
+
+def label_of(key, runs):
+    s = runs[0].get("scheme")
+    if not s:
+        return "case file's scheme"
+    flux = {"delta_sph": "δ-SPH", "riemann": "Leduc", "riemann_vila": "Vila"}.get(s["flux"], s["flux"])
+    return flux + {"lagrangian": "", "shifting": " + shifting", "ale": " + ALE", "ale_free": " + ALE free"}.get(s["transport"], "")
+
+
+def error_panel(ax, rs, primary_only=False):
+    """Error against wall time over the ladder, one line per error (and per scheme where a case was
+    run with several; with primary_only the case's first error only)."""
+    schemes = by_scheme(rs)
+    names = error_names([r for g in schemes.values() for r in g])
+    if primary_only and names:
+        names = names[:1]
+    drawn = False
+    for key, runs in schemes.items():
+        order = sorted(runs, key=lambda r: (r["wall_seconds"] if r.get("variant") else r["resolution"]))
+        for name in names:
+            pts = [(r["wall_seconds"], r["errors"][name]) for r in order if r["errors"].get(name, 0) > 0]
+            if not pts:
+                continue
+            lab = name if len(schemes) == 1 else (label_of(key, runs) if primary_only else f"{name}, {label_of(key, runs)}")
+            ax.loglog(*zip(*pts), "o-" if key == ("case", "case") else "s--", ms=4, label=lab)
+            drawn = True
+            if len(pts) == 1:
+                ax.annotate(f"{pts[0][1]:.3g}", pts[0], fontsize=7)
+            # APR comparisons: name each point (coarse uniform, APR, fine uniform)
+            for r in order:
+                if r.get("variant") and r["errors"].get(name, 0) > 0:
+                    ax.annotate(r["variant"], (r["wall_seconds"], r["errors"][name]), fontsize=7,
+                                xytext=(3, 3), textcoords="offset points")
     ax.set_xlabel("wall time (s)")
-    ax.set_ylabel("error")
+    ax.set_ylabel(names[0] if primary_only and names else "error")
     ax.set_title("error against wall time")
     ax.grid(True, which="both", alpha=0.3)
-    if names:
-        ax.legend(fontsize=7)
+    if drawn:
+        ax.legend(fontsize=6)
 
 
 def solution_panel(ax, out, src, case, rs):
@@ -167,6 +207,25 @@ def conservation_panel(ax, out, r):
     ax.legend(fontsize=6)
 
 
+def draw_case(out, src, case, rs):
+    """<case>.png: error against wall time (every scheme), the solution against its reference and
+    the conserved quantities (the case file's scheme, the runs that have a folder in OUT)."""
+    here = [r for r in rs if os.path.isdir(os.path.join(out, r["dir"]))]
+    main_scheme = by_scheme(here)
+    own = next(iter(main_scheme.values()))
+    # (APR comparisons: in wall-time order, which is coarse, APR, fine)
+    own = sorted(own, key=lambda r: (r["wall_seconds"] if r.get("variant") else r["resolution"]))
+    fig, axes = plt.subplots(1, 3, figsize=(13, 3.6))
+    error_panel(axes[0], rs)
+    if not solution_panel(axes[1], out, src, case, own):
+        axes[1].set_visible(False)
+    conservation_panel(axes[2], out, own[-1])
+    fig.suptitle(case, fontsize=10)
+    fig.tight_layout()
+    fig.savefig(f"{out}/{case}.png", dpi=80)
+    plt.close(fig)
+
+
 def main(argv):
     args = [a for a in argv if not a.startswith("--")]
     docs = argv[argv.index("--docs") + 1] if "--docs" in argv else None
@@ -178,30 +237,27 @@ def main(argv):
     cases = list(dict.fromkeys(r["case"] for r in runs))
     figures = ["## Figures\n", "Per case: error against wall time over the resolution ladder; the solution "
                "against its reference; mass, momentum and kinetic-energy drift of the finest run.\n"]
-    # the accuracy cases side by side (the first figure of the report)
-    acc = [c for c in cases if not c.startswith("stability")]
+    # the accuracy cases side by side (the first figure of the report), 2D then 3D, each case's
+    # first error against wall time, one line per scheme
+    acc = sorted((c for c in cases if not c.startswith("stability")), key=lambda c: c.endswith("_3d"))
     if acc:
-        fig, axes = plt.subplots(1, len(acc), figsize=(4.2 * len(acc), 3.6), squeeze=False)
-        for ax, case in zip(axes[0], acc):
-            error_panel(ax, [r for r in runs if r["case"] == case])
+        cols = min(4, len(acc))
+        rows = (len(acc) + cols - 1) // cols
+        fig, axes = plt.subplots(rows, cols, figsize=(4.4 * cols, 3.6 * rows), squeeze=False)
+        for ax, case in zip(axes.flat, acc):
+            error_panel(ax, [r for r in runs if r["case"] == case], primary_only=True)
             ax.set_title(case, fontsize=9)
+        for ax in list(axes.flat)[len(acc):]:
+            ax.set_visible(False)
         fig.tight_layout()
-        fig.savefig(f"{out}/error_vs_wall_time.png", dpi=80)
+        fig.savefig(f"{out}/error_vs_wall_time.png", dpi=72)
         plt.close(fig)
         figures.append("![error against wall time](error_vs_wall_time.png)\n")
     for case in cases:
-        # (APR comparisons: in wall-time order, which is coarse, APR, fine)
-        rs = sorted((r for r in runs if r["case"] == case),
-                    key=lambda r: (r["wall_seconds"] if r.get("variant") else r["resolution"]))
-        fig, axes = plt.subplots(1, 3, figsize=(13, 3.6))
-        error_panel(axes[0], rs)
-        if not solution_panel(axes[1], out, src, case, rs):
-            axes[1].set_visible(False)
-        conservation_panel(axes[2], out, rs[-1])
-        fig.suptitle(case, fontsize=10)
-        fig.tight_layout()
-        fig.savefig(f"{out}/{case}.png", dpi=80)
-        plt.close(fig)
+        rs = [r for r in runs if r["case"] == case]
+        # a case whose runs have no folder here (runs taken from the record) keeps the figure it has
+        if any(os.path.isdir(os.path.join(out, r["dir"])) for r in rs):
+            draw_case(out, src, case, rs)
         figures.append(f"### {case}\n\n![{case}]({case}.png)\n")
     with open(f"{out}/figures.md.tmp", "w") as f:
         f.write("\n".join(figures))

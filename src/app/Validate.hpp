@@ -17,6 +17,7 @@ struct ValidateOptions {
   // flux delta_sph or riemann (Riemann-SPH with MUSCL), transport lagrangian or shifting
   // (scheme_sets() in Validate.cpp); an entry's own overrides still win
   std::string flux = "case", transport = "case";
+  bool list = false;  // --list: print the catalogue (name, group, case file) and run nothing
 };
 
 // Returns the process exit code: 0 when every run passed its thresholds.

@@ -44,7 +44,16 @@ struct Report {
   nlohmann::json j;
   std::ostringstream md;
   bool all_passed = true;
+  std::string commit, date;  // of the source the runs were built from; when they started (UTC)
+  int threads = 0;           // the backend's threads
 };
+
+// The source's commit (git rev-parse --short HEAD, "+modified" when tracked files differ from it;
+// "unknown" without git).
+std::string source_commit(const std::string& source_dir);
+
+// The current time, UTC, as 2026-11-25T10:00:00Z.
+std::string utc_now();
 
 // A figure in the report: 4 significant digits.
 std::string fmt(double v);
