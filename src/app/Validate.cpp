@@ -9,6 +9,7 @@
 
 #include "app/BuildInfo.hpp"
 #include "app/ValidateReport.hpp"
+#include "SourceCommit.hpp"  // generated: cmake/SourceCommit.cmake
 #include "scene/CaseFile.hpp"
 #include "solver/Runner.hpp"
 
@@ -433,7 +434,7 @@ int run_validation(const ValidateOptions& opt) {
   }
   std::filesystem::create_directories(opt.out_dir);
   Report report;
-  report.commit = validate::source_commit(opt.source_dir);
+  report.commit = ONDINE_SOURCE_COMMIT;
   report.date = validate::utc_now();
   report.threads = backend_threads();
   report.j["level"] = opt.level;

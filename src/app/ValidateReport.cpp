@@ -147,28 +147,6 @@ void compare_run_with_fine(const ValidateOptions& opt, const ValidationCase& c, 
 
 }  // namespace
 
-namespace {
-// The first line a shell command prints ("" when it fails).
-std::string first_line_of(const std::string& cmd) {
-  std::string line;
-  if (FILE* f = popen(cmd.c_str(), "r")) {
-    char buf[256];
-    if (std::fgets(buf, sizeof buf, f)) line = buf;
-    pclose(f);
-  }
-  while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
-  return line;
-}
-}  // namespace
-
-std::string source_commit(const std::string& source_dir) {
-  const std::string git = "git -C '" + source_dir + "' ";
-  const std::string head = first_line_of(git + "rev-parse --short HEAD 2>/dev/null");
-  if (head.empty()) return "unknown";
-  const bool modified = !first_line_of(git + "status --porcelain --untracked-files=no 2>/dev/null").empty();
-  return modified ? head + "+modified" : head;
-}
-
 std::string utc_now() {
   const std::time_t t = std::time(nullptr);
   std::tm tm{};

@@ -44,13 +44,9 @@ struct Report {
   nlohmann::json j;
   std::ostringstream md;
   bool all_passed = true;
-  std::string commit, date;  // of the source the runs were built from; when they started (UTC)
+  std::string commit, date;  // the binary's source commit (cmake/SourceCommit.cmake); when the runs started (UTC)
   int threads = 0;           // the backend's threads
 };
-
-// The source's commit (git rev-parse --short HEAD, "+modified" when tracked files differ from it;
-// "unknown" without git).
-std::string source_commit(const std::string& source_dir);
 
 // The current time, UTC, as 2026-11-25T10:00:00Z.
 std::string utc_now();
