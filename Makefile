@@ -43,9 +43,12 @@ test: build
 VALIDATE_OUT ?= out/validation-full
 # The level interface's pressure noise of the APR dam break (issue 7) goes to docs/validation/apr_interface_noise.json.
 # The cases can also run as separate processes and be merged: scripts/merge_validation.py.
+# The runs join the record (docs/validation/validation.json) through scripts/merge_validation.py,
+# replacing its runs of the same case, scheme and level; the report is made from the merged record.
 validate: build
 	$(BUILD)/ondine validate --level full --case all --out $(VALIDATE_OUT); s=$$?; \
-	  /usr/bin/python3 scripts/plot_validation.py $(VALIDATE_OUT) . --docs docs/validation.md && \
+	  /usr/bin/python3 scripts/merge_validation.py --replace $(VALIDATE_OUT)-record docs/validation $(VALIDATE_OUT) && \
+	  /usr/bin/python3 scripts/plot_validation.py $(VALIDATE_OUT)-record . --docs docs/validation.md && \
 	  /usr/bin/python3 scripts/apr_interface_noise.py $(VALIDATE_OUT)/apr_dam_break_2d --json docs/validation/apr_interface_noise.json && exit $$s
 
 ifneq ($(wildcard $(CUDA_ROOT)/bin/nvcc),)
