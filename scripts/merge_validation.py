@@ -26,6 +26,9 @@ import shutil
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_validation import primary_error  # noqa: E402
+
 FLUX = {"delta_sph": "δ-SPH", "riemann": "Riemann (Leduc)", "riemann_vila": "Riemann (Vila)"}
 TRANSPORT = {"lagrangian": "", "shifting": " + shifting", "ale": " + ALE", "ale_free": " + ALE (free)"}
 
@@ -61,6 +64,32 @@ def errors_text(run):
     return t + run.get("note", "")
 
 
+def schemes_md(runs):
+    """Per accuracy case run at the quick level with several schemes: its first error and wall time
+    at each resolution, one column per scheme (the quick level's runs, made in one sitting so
+    that their times compare)."""
+    runs = [r for r in runs if r.get("level") == "quick" and not r.get("variant")]
+    cases = [c for c in dict.fromkeys(r["case"] for r in runs) if not c.startswith(("stability", "apr_"))]
+    labels = list(dict.fromkeys(scheme_label(r) for r in runs if r["case"] in cases))
+    md = []
+    for case in cases:
+        rs = [r for r in runs if r["case"] == case]
+        if len({scheme_label(r) for r in rs}) < 2 or not primary_error(rs):
+            continue
+        name = primary_error(rs)
+        for res in sorted({r["resolution"] for r in rs}):
+            cells = []
+            for lab in labels:
+                at = [r for r in rs if scheme_label(r) == lab and r["resolution"] == res and name in r["errors"]]
+                cells.append(f"{fmt(at[0]['errors'][name])} in {fmt(at[0]['wall_seconds'])} s" if at else "")
+            md.append(f"| {case} | {fmt(res)} | {name} | " + " | ".join(cells) + " |")
+    if not md:
+        return []
+    return (["Schemes side by side, quick level (each case's first bounded error and the run's wall time; "
+             "each run's date and threads are in validation.json):", "",
+             "| case | resolution | error | " + " | ".join(labels) + " |", "|---|---|---|" + "---|" * len(labels)] + md + [""])
+
+
 def report_md(record, figures):
     runs = record["runs"]
     md = ["# Validation (the record)", "",
@@ -72,6 +101,7 @@ def report_md(record, figures):
                   + f" | {r['particles']} | {r['steps']} | {r.get('threads', '?')} | {fmt(r['wall_seconds'])} | "
                   f"{fmt(r.get('particle_steps_per_second', 0))} | {errors_text(r)} | {'yes' if r['passed'] else '**no**'} |")
     md.append("")
+    md += schemes_md(runs)
     ratios = ("near_wall_error_over_fine", "wall_time_over_fine", "cpu_time_over_fine", "probe_pressure_difference_vs_fine")
     for r in runs:
         if r.get("variant") and r["variant"] != "fine" and any(k in r["errors"] for k in ratios):
@@ -88,6 +118,20 @@ def write_atomically(path, text):
     with open(path + ".tmp", "w") as f:
         f.write(text)
     os.replace(path + ".tmp", path)
+
+
+def copy_run(src, dest, run):
+    """Copies a run's folders (and its contrast run's) from SRC to DEST. The folders of a validate
+    output are named by case and resolution only, so runs of another scheme or level go to
+    <case>/<level>_<flux>_<transport>/... in DEST, and their `dir` says so."""
+    _, flux, transport, level = group(run)
+    for key in ("dir", "contrast_dir"):
+        if key not in run or not os.path.isdir(os.path.join(src, run[key])):
+            continue
+        case, rest = run[key].split("/", 1)
+        to = run[key] if (flux, transport, level) == ("case", "case", "full") else f"{case}/{level}_{flux}_{transport}/{rest}"
+        shutil.copytree(os.path.join(src, run[key]), os.path.join(dest, to), dirs_exist_ok=True)
+        run[key] = to
 
 
 def main(argv):
@@ -126,9 +170,9 @@ def main(argv):
                 case_order.append(run["case"])
         runs += new
         orders.update(j.get("orders", {}))
-        for case in dict.fromkeys(r["case"] for r in new):
-            if os.path.isdir(os.path.join(src, case)) and os.path.abspath(src) != os.path.abspath(dest):
-                shutil.copytree(os.path.join(src, case), os.path.join(dest, case), dirs_exist_ok=True)
+        if os.path.abspath(src) != os.path.abspath(dest):
+            for run in new:
+                copy_run(src, dest, run)
     place = {c: k for k, c in enumerate(case_order)}
     runs.sort(key=lambda r: place[r["case"]])  # stable: each case's rungs keep their order
     levels = sorted({r["level"] for r in runs})

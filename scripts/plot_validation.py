@@ -61,14 +61,30 @@ def error_names(rs):
     return sorted(names)
 
 
+# the error a case's ladder is about, in this order of preference where a case has several
+PRIMARY = ("velocity_l2", "pressure_linf", "buoyancy_error", "front_max_relative_error", "centreline_u_rms", "H2_rms_error",
+           "cd_error", "velocity_l2_near_wall", "probe_pressure_difference_vs_fine", "kinetic_over_potential")
+
+
+def primary_error(rs):
+    """The error a case's ladder is about: the first of PRIMARY it has, else its first error name."""
+    names = error_names(rs)
+    have = {k for r in rs for k in r["errors"]}
+    return next((k for k in PRIMARY if k in have), names[0] if names else None)
+
+
 def by_scheme(rs):
-    """The runs of one case by the scheme asked (flux, transport), each the full level's runs where
-    there are some, else the quick level's; the case file's own scheme first."""
-    groups = {}
+    """The runs of one case by the scheme they resolved to (flux, transport), each the full level's
+    runs where there are some, else the quick level's; the case file's own scheme first."""
+    groups, own = {}, None
     for r in rs:
-        groups.setdefault((r.get("flux", "case"), r.get("transport", "case")), []).append(r)
+        s = r.get("scheme") or {}
+        key = (s.get("flux", "?"), s.get("transport", "?"))
+        groups.setdefault(key, []).append(r)
+        if (r.get("flux", "case"), r.get("transport", "case")) == ("case", "case") and own is None:
+            own = key
     out = {}
-    for key in sorted(groups, key=lambda k: k != ("case", "case")):
+    for key in sorted(groups, key=lambda k: k != own):
         g = groups[key]
         full = [r for r in g if r.get("level", "full") == "full"]
         out[key] = full or g
@@ -88,8 +104,9 @@ def error_panel(ax, rs, primary_only=False):
     run with several; with primary_only the case's first error only)."""
     schemes = by_scheme(rs)
     names = error_names([r for g in schemes.values() for r in g])
-    if primary_only and names:
-        names = names[:1]
+    if primary_only:
+        first = primary_error([r for g in schemes.values() for r in g])
+        names = [first] if first else []
     drawn = False
     for key, runs in schemes.items():
         order = sorted(runs, key=lambda r: (r["wall_seconds"] if r.get("variant") else r["resolution"]))
@@ -98,7 +115,7 @@ def error_panel(ax, rs, primary_only=False):
             if not pts:
                 continue
             lab = name if len(schemes) == 1 else (label_of(key, runs) if primary_only else f"{name}, {label_of(key, runs)}")
-            ax.loglog(*zip(*pts), "o-" if key == ("case", "case") else "s--", ms=4, label=lab)
+            ax.loglog(*zip(*pts), "o-" if key == next(iter(schemes)) else "s--", ms=4, label=lab)
             drawn = True
             if len(pts) == 1:
                 ax.annotate(f"{pts[0][1]:.3g}", pts[0], fontsize=7)
@@ -207,12 +224,17 @@ def conservation_panel(ax, out, r):
     ax.legend(fontsize=6)
 
 
+def own_scheme(rs):
+    """The runs of the case file's own scheme (no --flux, --transport), or all where there are none."""
+    own = [r for r in rs if (r.get("flux", "case"), r.get("transport", "case")) == ("case", "case")]
+    return own or rs
+
+
 def draw_case(out, src, case, rs):
     """<case>.png: error against wall time (every scheme), the solution against its reference and
     the conserved quantities (the case file's scheme, the runs that have a folder in OUT)."""
-    here = [r for r in rs if os.path.isdir(os.path.join(out, r["dir"]))]
-    main_scheme = by_scheme(here)
-    own = next(iter(main_scheme.values()))
+    here = [r for r in own_scheme(rs) if os.path.isdir(os.path.join(out, r["dir"]))]
+    own = [r for r in here if r.get("level", "full") == "full"] or here
     # (APR comparisons: in wall-time order, which is coarse, APR, fine)
     own = sorted(own, key=lambda r: (r["wall_seconds"] if r.get("variant") else r["resolution"]))
     fig, axes = plt.subplots(1, 3, figsize=(13, 3.6))
@@ -255,8 +277,8 @@ def main(argv):
         figures.append("![error against wall time](error_vs_wall_time.png)\n")
     for case in cases:
         rs = [r for r in runs if r["case"] == case]
-        # a case whose runs have no folder here (runs taken from the record) keeps the figure it has
-        if any(os.path.isdir(os.path.join(out, r["dir"])) for r in rs):
+        # a case whose own scheme's runs have no folder here (runs taken from the record) keeps the figure it has
+        if any(os.path.isdir(os.path.join(out, r["dir"])) for r in own_scheme(rs)):
             draw_case(out, src, case, rs)
         figures.append(f"### {case}\n\n![{case}]({case}.png)\n")
     with open(f"{out}/figures.md.tmp", "w") as f:
