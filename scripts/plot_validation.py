@@ -69,8 +69,9 @@ PRIMARY = ("velocity_l2", "pressure_linf", "buoyancy_error", "front_max_relative
 def primary_error(rs):
     """The error a case's ladder is about: the first of PRIMARY it has, else its first error name."""
     names = error_names(rs)
+    bounded = {k for r in rs for k in r.get("thresholds", {}) if k in r["errors"]}
     have = {k for r in rs for k in r["errors"]}
-    return next((k for k in PRIMARY if k in have), names[0] if names else None)
+    return next((k for k in PRIMARY if k in bounded), next((k for k in PRIMARY if k in have), names[0] if names else None))
 
 
 def by_scheme(rs):
@@ -267,8 +268,13 @@ def main(argv):
         rows = (len(acc) + cols - 1) // cols
         fig, axes = plt.subplots(rows, cols, figsize=(4.4 * cols, 3.6 * rows), squeeze=False)
         for ax, case in zip(axes.flat, acc):
-            error_panel(ax, [r for r in runs if r["case"] == case], primary_only=True)
-            ax.set_title(case, fontsize=9)
+            rs = [r for r in runs if r["case"] == case]
+            # a case run with several schemes at the quick level: those runs only (one sitting, so
+            # their times compare); the case's full ladder is in its own figure
+            quick = [r for r in rs if r.get("level") == "quick"]
+            one_sitting = len(by_scheme(quick)) > 1
+            error_panel(ax, quick if one_sitting else rs, primary_only=True)
+            ax.set_title(case + (" (quick level)" if one_sitting else ""), fontsize=9)
         for ax in list(axes.flat)[len(acc):]:
             ax.set_visible(False)
         fig.tight_layout()
