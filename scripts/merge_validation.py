@@ -27,17 +27,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_validation import primary_error  # noqa: E402
-
-FLUX = {"delta_sph": "δ-SPH", "riemann": "Riemann (Leduc)", "riemann_vila": "Riemann (Vila)"}
-TRANSPORT = {"lagrangian": "", "shifting": " + shifting", "ale": " + ALE", "ale_free": " + ALE (free)"}
-
-
-def scheme_label(run):
-    """The scheme a run resolved to, as the report names it (δ-SPH + shifting, Riemann (Vila) + ALE, ...)."""
-    s = run.get("scheme") or {}
-    return FLUX.get(s.get("flux"), "?") + TRANSPORT.get(s.get("transport"), "")
-
+from plot_validation import primary_error, scheme_label  # noqa: E402
 
 def group(run):
     return (run["case"], run.get("flux", "case"), run.get("transport", "case"), run.get("level", "full"))
@@ -108,7 +98,7 @@ def report_md(record, figures):
             md += [f"{r['case']} / {r['variant']} ({scheme_label(r)}, {r.get('level', 'full')}) against fine: "
                    + " ".join(f"{k} {fmt(r['errors'][k])};" for k in ratios if k in r["errors"]), ""]
     md += ["Observed orders (two finest resolutions):", ""]
-    for key, errs in record["orders"].items():
+    for key, errs in sorted(record["orders"].items()):
         md += [f"- {key} / {name}: {fmt(order)}" for name, order in errs.items()]
     md += ["", figures]
     return "\n".join(md)

@@ -92,12 +92,14 @@ def by_scheme(rs):
     return out
 
 
-def label_of(key, runs):
-    s = runs[0].get("scheme")
-    if not s:
-        return "case file's scheme"
-    flux = {"delta_sph": "δ-SPH", "riemann": "Leduc", "riemann_vila": "Vila"}.get(s["flux"], s["flux"])
-    return flux + {"lagrangian": "", "shifting": " + shifting", "ale": " + ALE", "ale_free": " + ALE free"}.get(s["transport"], "")
+FLUX = {"delta_sph": "δ-SPH", "riemann": "Riemann (Leduc)", "riemann_vila": "Riemann (Vila)"}
+TRANSPORT = {"lagrangian": "", "shifting": " + shifting", "ale": " + ALE", "ale_free": " + ALE (free)"}
+
+
+def scheme_label(run):
+    """The scheme a run resolved to, as the report names it (δ-SPH + shifting, Riemann (Vila) + ALE, ...)."""
+    s = run.get("scheme") or {}
+    return FLUX.get(s.get("flux"), "?") + TRANSPORT.get(s.get("transport"), "")
 
 
 def error_panel(ax, rs, primary_only=False):
@@ -115,7 +117,7 @@ def error_panel(ax, rs, primary_only=False):
             pts = [(r["wall_seconds"], r["errors"][name]) for r in order if r["errors"].get(name, 0) > 0]
             if not pts:
                 continue
-            lab = name if len(schemes) == 1 else (label_of(key, runs) if primary_only else f"{name}, {label_of(key, runs)}")
+            lab = name if len(schemes) == 1 else (scheme_label(runs[0]) if primary_only else f"{name}, {scheme_label(runs[0])}")
             ax.loglog(*zip(*pts), "o-" if key == next(iter(schemes)) else "s--", ms=4, label=lab)
             drawn = True
             if len(pts) == 1:

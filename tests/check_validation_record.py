@@ -21,7 +21,7 @@ def catalogue(arg):
                                                                           capture_output=True, text=True).stdout
     except (OSError, subprocess.CalledProcessError) as e:
         sys.exit(f"check_validation_record.py: cannot read the catalogue from {arg}: {e}")
-    names = {line.split()[0]: line.split()[1] for line in text.splitlines() if line.strip()}
+    names = {line.split()[0] for line in text.splitlines() if line.strip()}
     if not names:
         sys.exit(f"check_validation_record.py: {arg}: no validation case listed")
     return names
@@ -43,9 +43,13 @@ def problems(doc_path, record_path, names):
         runs = json.load(open(record_path))["runs"]
     except (OSError, ValueError, KeyError) as e:
         return [f"{record_path}: not a validation record ({e})"]
+    try:
+        doc_text = open(doc_path).read()
+    except OSError as e:
+        return [f"{doc_path}: cannot read it ({e.strerror})"]
     recorded = {r.get("case") for r in runs}
     out = []
-    for n, case in named_cases(open(doc_path).read(), names):
+    for n, case in named_cases(doc_text, names):
         if case not in recorded:
             out.append(f"{doc_path}:{n} names case '{case}', which has no recorded run in {record_path}")
     for k, r in enumerate(runs):

@@ -211,8 +211,8 @@ bool riemann_flux(const ValidateOptions& opt) { return opt.flux == "riemann" || 
 
 bool options_known(const ValidateOptions& opt) {
   for (const std::string& n : opt.cases) {
-    bool known = n == "stability" || n == "all" || n == "apr" || n == "open" || n == "accuracy";
-    for (const ValidationCase& c : catalogue()) known = known || c.name == n;
+    bool known = n == "all";
+    for (const ValidationCase& c : catalogue()) known = known || c.name == n || group_of(c.name) == n;
     if (!known) {
       std::string list;
       for (const ValidationCase& c : catalogue()) list += " " + c.name;
