@@ -89,6 +89,15 @@ TEST_CASE("Bad case files get a message naming file, line and key", "[unit][case
     CHECK_THAT(error_of(good + "reference: {type: poiseuille, length: 1.0, velocity: 1.0}\n"),
                Contains("reference.velocity") && Contains("only a couette"));
   }
+  SECTION("open_channel reference: its inlet speed, and a section whose pressure stations lie in the domain") {
+    CHECK(error_of(good + "reference: {type: open_channel, length: 0.4, origin: [0.7, 0.0], velocity: 1.0}\n").empty());
+    CHECK_THAT(error_of(good + "reference: {type: open_channel, length: 0.4, origin: [0.7, 0.0]}\n"),
+               Contains("reference.velocity") && Contains("missing"));
+    // 0.7 - 1.5 x 0.6 < 0: the upstream pressure station would lie outside the domain
+    CHECK_THAT(error_of(good + "reference: {type: open_channel, length: 0.6, origin: [0.7, 0.0], velocity: 1.0}\n"),
+               Contains("cases/box.yaml:") && Contains("reference.origin") && Contains("inside the domain"));
+    CHECK_THAT(error_of(good + "reference: {type: open_channel, length: 0.4, velocity: 1.0}\n"), Contains("reference.origin"));
+  }
   SECTION("unknown key") {
     const auto m = error_of(replace(good, "  mach: 0.1", "  mach: 0.1\n  rho_zero: 3"));
     CHECK_THAT(m, Contains("cases/box.yaml:11:") && Contains("fluid.rho_zero") && Contains("unknown key"));

@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "scene/CaseFile.hpp"
-#include "reference/ErrorNorms.hpp"
+#include "observers/ErrorNorms.hpp"
 #include "solver/Simulation.hpp"
 
 using namespace ondine;

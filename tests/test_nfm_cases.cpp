@@ -7,7 +7,7 @@
 
 #include "scene/CaseFile.hpp"
 #include "reference/References.hpp"
-#include "reference/ErrorNorms.hpp"
+#include "observers/ErrorNorms.hpp"
 #include "solver/Simulation.hpp"
 #include "test_helpers.hpp"
 

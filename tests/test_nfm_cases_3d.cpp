@@ -8,7 +8,7 @@
 #include <fstream>
 #include <unistd.h>
 
-#include "reference/ErrorNorms.hpp"
+#include "observers/ErrorNorms.hpp"
 #include "reference/References.hpp"
 #include "scene/CaseFile.hpp"
 #include "solver/Simulation.hpp"

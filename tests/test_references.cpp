@@ -1,5 +1,5 @@
 // The reference solutions (src/reference/References.cpp) against their limits, and each
-// error norm of src/reference/ErrorNorms*.{hpp,cpp} against a state whose error is known.
+// error norm of src/observers/ErrorNorms*.{hpp,cpp} against a state whose error is known.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -7,7 +7,8 @@
 #include <fstream>
 #include <map>
 
-#include "reference/ErrorNorms.hpp"
+#include "observers/ChannelReference.hpp"
+#include "observers/ErrorNorms.hpp"
 #include "reference/References.hpp"
 #include "reference/SensorSeries.hpp"
 #include "test_helpers.hpp"
@@ -119,13 +120,13 @@ TEST_CASE("Error norms: a channel whose velocity is the start-up profile has no 
   const Scene& sc = sim.scene();
   const double t = sim.time();
   set_velocity(sim, [&](double, double y) {
-    return std::array<double, 2>{reference::channel_startup(sc, y - sc.reference.origin[1], t), 0.0};
+    return std::array<double, 2>{channel_startup(sc, y - sc.reference.origin[1], t), 0.0};
   });
   auto e = reference_errors(sim);
   CHECK(e.at("velocity_l2") < 1e-6);  // the quadratic interpolation of the 1001-point table
   // 1 % more everywhere: an L2 of 1 %
   set_velocity(sim, [&](double, double y) {
-    return std::array<double, 2>{1.01 * reference::channel_startup(sc, y - sc.reference.origin[1], t), 0.0};
+    return std::array<double, 2>{1.01 * channel_startup(sc, y - sc.reference.origin[1], t), 0.0};
   });
   e = reference_errors(sim);
   CHECK(e.at("velocity_l2") == Approx(0.01).epsilon(1e-3));

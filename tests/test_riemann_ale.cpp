@@ -8,7 +8,7 @@
 #include <memory>
 #include <random>
 
-#include "reference/ErrorNorms.hpp"
+#include "observers/ErrorNorms.hpp"
 #include "reference/References.hpp"
 #include "scene/CaseFile.hpp"
 #include "solver/KernelDispatch.hpp"

@@ -8,7 +8,7 @@
 #include <random>
 
 #include "kernels/terms/RiemannLeduc.hpp"
-#include "reference/ErrorNorms.hpp"
+#include "observers/ErrorNorms.hpp"
 #include "reference/References.hpp"
 #include "scene/CaseFile.hpp"
 #include "solver/Simulation.hpp"

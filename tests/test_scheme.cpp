@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "reference/ErrorNorms.hpp"
+#include "observers/ErrorNorms.hpp"
 #include "test_helpers.hpp"
 
 using namespace ondine;

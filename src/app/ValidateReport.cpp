@@ -9,6 +9,7 @@
 
 #include "io/AtomicFile.hpp"
 #include "io/SnapshotWriter.hpp"
+#include "observers/ChannelReference.hpp"
 #include "reference/References.hpp"
 
 namespace ondine::validate {
@@ -56,8 +57,16 @@ bool write_snapshot_profile(const Scene& s, const std::string& dir, std::ostring
     o << "y,u,u_exact\n";
     for (std::size_t i = 0; i < d.particles; ++i) {
       const double y = x[3 * i + 1] - o0[1];
-      o << y << "," << u[3 * i] << "," << reference::channel_startup(s, y, d.time) << "\n";
+      o << y << "," << u[3 * i] << "," << channel_startup(s, y, d.time) << "\n";
     }
+  } else if (kind == ReferenceKind::OpenChannel) {
+    // the particles within dx/2 of the measured section, against the parabola of the inlet's mean
+    o << "y,u,u_exact\n";
+    for (std::size_t i = 0; i < d.particles; ++i)
+      if (std::abs(x[3 * i] - o0[0]) < 0.5 * s.dx) {
+        const double y = x[3 * i + 1] - o0[1];
+        o << y << "," << u[3 * i] << "," << 6 * s.reference.velocity * y * (L - y) / (L * L) << "\n";
+      }
   } else if (kind == ReferenceKind::Hydrostatic) {
     const auto& p = column("pressure");
     const double g = std::abs(s.gravity[1]);
@@ -163,7 +172,8 @@ std::string fmt(double v) {
   return o.str();
 }
 
-// profile.csv of a run, the solution next to its reference for the plots: Poiseuille u(y) and
+// profile.csv of a run, the solution next to its reference for the plots: Poiseuille u(y) (the
+// open channel's at its section) and
 // hydrostatic p(z) per particle at the end, cavity centreline velocities (Ghia's points are
 // plotted from cases/reference/), Taylor-Green max speed and E_k over time against the decay.
 void write_profile(const Scene& s, const std::string& dir) {
@@ -173,7 +183,8 @@ void write_profile(const Scene& s, const std::string& dir) {
   const bool tg = !s.blocks.empty() && s.blocks.front().velocity_kind == InitialVelocity::TaylorGreen;
   if (tg) {
     write_taylor_green_profile(s, dir, o);
-  } else if (kind == ReferenceKind::Poiseuille || kind == ReferenceKind::Couette || kind == ReferenceKind::Hydrostatic ||
+  } else if (kind == ReferenceKind::Poiseuille || kind == ReferenceKind::Couette || kind == ReferenceKind::OpenChannel ||
+             kind == ReferenceKind::Hydrostatic ||
              kind == ReferenceKind::GhiaRe100 || kind == ReferenceKind::GhiaRe1000) {
     if (!write_snapshot_profile(s, dir, o)) return;
   } else {

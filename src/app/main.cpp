@@ -13,14 +13,14 @@
 #include <cstdlib>
 #include <iostream>
 
-#include "app/BuildInfo.hpp"
+#include "run/BuildInfo.hpp"
 #include "app/KernelProfile.hpp"
 #include "app/Validate.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/Checkpoint.hpp"
 #include "scene/CaseFile.hpp"
 #include "scene/MemoryEstimate.hpp"
-#include "solver/Runner.hpp"
+#include "run/Runner.hpp"
 
 namespace {
 

@@ -54,13 +54,6 @@ double couette_startup(double y, double t, double L, double V0, double nu) {
   return u;
 }
 
-double channel_startup(const Scene& s, double y, double t) {
-  const double L = s.reference.length;
-  y = std::min(std::max(y, 0.0), L);
-  return s.reference.kind == ReferenceKind::Couette ? couette_startup(y, t, L, s.reference.velocity, s.nu)
-                                                    : poiseuille_startup(y, t, L, s.body_force[0] + s.gravity[0], s.nu);
-}
-
 const std::vector<std::pair<double, double>>& martin_moyce_front() {
   static const std::vector<std::pair<double, double>> data = {
       {0.0, 1.0},   {0.41, 1.11}, {0.84, 1.22}, {1.19, 1.44}, {1.43, 1.67}, {1.63, 1.89}, {1.83, 2.11},

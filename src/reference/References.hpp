@@ -1,12 +1,11 @@
 #pragma once
-// Reference solutions computed in code, and published data typed in with their source.
+// Reference solutions computed in code, and published data typed in with their source. They
+// take parameters, not scenes (observers/ reads a scene's reference and calls them).
 #include <array>
 #include <map>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include "scene/Scene.hpp"
 
 namespace ondine::reference {
 
@@ -19,11 +18,6 @@ double poiseuille_startup(double y, double t, double L, double F, double nu);
 // from t = 0; Morris et al. 1997): u(y, t) = V0 y / L
 //   + sum_{n>=1} 2 V0 (-1)^n / (n pi) sin(n pi y / L) exp(-n^2 pi^2 nu t / L^2).
 double couette_startup(double y, double t, double L, double V0, double nu);
-
-// The channel reference of a scene (reference.type poiseuille or couette) at height y above
-// reference.origin (clamped to [0, L]) and time t: poiseuille_startup with F = body force +
-// gravity along x, or couette_startup with V0 = reference.velocity.
-double channel_startup(const Scene& s, double y, double t);
 
 // Start-up laminar flow along x in a square duct 0 < y, z < L driven by a body force F
 // (the double sine series of nu lap u = -F with u = 0 on the walls):

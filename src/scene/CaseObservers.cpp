@@ -99,8 +99,9 @@ void read_reference(const Reader& r, YAML::Node& root, Scene& s) {
     r.only_keys(rf, "reference", {"type", "length", "origin", "velocity", "file", "wall", "from"});
     const std::string t = r.word(r.required(rf, "reference", "type"), "reference.type",
                                  {"poiseuille", "couette", "hydrostatic", "martin_moyce", "ghia_re100", "ghia_re1000", "duct",
-                                  "spheric_test2", "cylinder"});
+                                  "spheric_test2", "cylinder", "open_channel"});
     s.reference.kind = t == "cylinder"     ? ReferenceKind::Cylinder
+                       : t == "open_channel" ? ReferenceKind::OpenChannel
                        : t == "duct"         ? ReferenceKind::Duct
                        : t == "spheric_test2" ? ReferenceKind::SphericTest2
                        : t == "poiseuille" ? ReferenceKind::Poiseuille
@@ -118,7 +119,8 @@ void read_reference(const Reader& r, YAML::Node& root, Scene& s) {
     else if (rf["file"]) r.fail(rf["file"], "reference.file", "only a spheric_test2 reference takes a file");
     if (D != 3 && s.reference.kind == ReferenceKind::Duct) r.fail(rf["type"], "reference.type", "duct is a 3D reference");
     if (s.reference.kind == ReferenceKind::Duct && !(s.nu > 0)) r.fail(rf["type"], "reference.type", "duct needs fluid.viscosity > 0");
-    if ((s.reference.kind == ReferenceKind::Poiseuille || s.reference.kind == ReferenceKind::Couette) && !(s.nu > 0))
+    if ((s.reference.kind == ReferenceKind::Poiseuille || s.reference.kind == ReferenceKind::Couette ||
+         s.reference.kind == ReferenceKind::OpenChannel) && !(s.nu > 0))
       r.fail(rf["type"], "reference.type", t + " needs fluid.viscosity > 0");
     if (s.reference.kind == ReferenceKind::Cylinder) {
       // a body in a stream: its wall, the stream's speed, the start of the averaging
@@ -130,11 +132,21 @@ void read_reference(const Reader& r, YAML::Node& root, Scene& s) {
       if (s.reference.from >= s.duration) r.fail(rf["from"] ? rf["from"] : rf, "reference.from", "expected a time before time.duration");
     } else if (rf["wall"] || rf["from"]) {
       r.fail(rf["wall"] ? rf["wall"] : rf["from"], "reference", "wall and from belong to a cylinder reference");
+    } else if (s.reference.kind == ReferenceKind::OpenChannel) {
+      // a channel between an inlet and an outlet: the inlet's mean speed; the section measured
+      // (origin) and the pressure stations (origin.x - 1.5 H, origin.x + 0.5 H) inside the domain
+      s.reference.velocity = r.positive(r.required(rf, "reference", "velocity"), "reference.velocity", " (m/s, the inlet's mean speed)");
+      const double x0 = s.reference.origin[0], H = s.reference.length;
+      if (!rf["origin"] || x0 - 1.5 * H < s.domain.min[0] || x0 + 0.5 * H > s.domain.max[0] ||
+          s.reference.origin[1] < s.domain.min[1] || s.reference.origin[1] + H > s.domain.max[1])
+        r.fail(rf["origin"] ? rf["origin"] : rf, "reference.origin",
+               "the bottom wall at the measured section, with origin.x - 1.5 length and origin.x + 0.5 length, and the "
+               "channel's height, inside the domain");
     } else if (s.reference.kind == ReferenceKind::Couette)
       s.reference.velocity = r.number(r.required(rf, "reference", "velocity"), "reference.velocity",
                                       "the speed along x of the wall at y = origin + length (m/s)");
     else if (rf["velocity"] && s.reference.kind != ReferenceKind::Cylinder)
-      r.fail(rf["velocity"], "reference.velocity", "only a couette or cylinder reference takes a velocity");
+      r.fail(rf["velocity"], "reference.velocity", "only a couette, cylinder or open_channel reference takes a velocity");
   }
 }
 

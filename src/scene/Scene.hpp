@@ -71,12 +71,14 @@ struct Wall {
 };
 
 // The analytic or experimental reference a case is compared with (errors in summary.json).
-enum class ReferenceKind { None, Poiseuille, Couette, Hydrostatic, MartinMoyce, GhiaRe100, GhiaRe1000, Duct, SphericTest2, Cylinder };
+enum class ReferenceKind { None, Poiseuille, Couette, Hydrostatic, MartinMoyce, GhiaRe100, GhiaRe1000, Duct, SphericTest2, Cylinder, OpenChannel };
 struct Reference {
   ReferenceKind kind = ReferenceKind::None;
   double length = 0;  // poiseuille: channel height L; hydrostatic: water depth H; martin_moyce: column width a; ghia: cavity side; duct: side (m)
   Vec3 origin{0, 0, 0};  // poiseuille, couette: bottom wall point; hydrostatic: tank bottom; martin_moyce: back wall at the floor (m)
   double velocity = 0;   // couette: speed along x of the wall at y = origin + length, from t = 0 (m/s)
+  // open_channel: length = H between the walls, origin = the bottom wall at the measured
+  // section, velocity = the inlet's mean speed U (m/s)
   std::string file;      // spheric_test2: the measured series (a path resolved against the case file's folder)
   // cylinder: length = D, velocity = U of the stream, the wall whose force gives C_D, C_L and St,
   // counted from time `from` (s, after the start-up)

@@ -1,4 +1,4 @@
-#include "solver/Runner.hpp"
+#include "run/Runner.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -11,12 +11,12 @@
 #include <iomanip>
 #include <sstream>
 
-#include "app/BuildInfo.hpp"
+#include "run/BuildInfo.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/Checkpoint.hpp"
-#include "reference/ErrorNorms.hpp"
-#include "solver/RunRecorder.hpp"
-#include "solver/RunRestart.hpp"
+#include "observers/ErrorNorms.hpp"
+#include "run/RunRecorder.hpp"
+#include "run/RunRestart.hpp"
 #include "solver/Simulation.hpp"
 
 namespace ondine {

@@ -3,8 +3,8 @@
 // names (reference.type; docs/validation.md), read from the state of a Simulation at its
 // current time: mass drift, momentum balance (fully periodic), Taylor-Green (2D),
 // start-up Poiseuille and Couette, Ghia et al.'s cavity centrelines, hydrostatic pressure,
-// wall leaks; and the buoyancy of submerged bodies from the wall forces. The solutions
-// themselves are in reference/References.hpp; this file only measures against them.
+// the open channel's developed flow, wall leaks; and the buoyancy of submerged bodies from the
+// wall forces. The solutions themselves are in reference/References.hpp; this file only measures against them.
 #include <map>
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "solver/RunOutput.hpp"
+#include "run/RunOutput.hpp"
 
 #include <cstdlib>
 #include <fstream>

@@ -16,7 +16,7 @@
 #include "reference/ForceCoefficients.hpp"
 #include "reference/References.hpp"
 #include "reference/SensorSeries.hpp"
-#include "solver/RunOutput.hpp"
+#include "run/RunOutput.hpp"
 #include "solver/Simulation.hpp"
 
 namespace ondine {

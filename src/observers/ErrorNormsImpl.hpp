@@ -1,11 +1,12 @@
 #pragma once
-// Definition of reference_errors (reference/ErrorNorms.hpp); included by ErrorNorms2d.cpp
+// Definition of reference_errors (observers/ErrorNorms.hpp); included by ErrorNorms2d.cpp
 // and ErrorNorms3d.cpp only.
 #include <algorithm>
 #include <cmath>
 
 #include "kernels/Math.hpp"
-#include "reference/ErrorNorms.hpp"
+#include "observers/ChannelReference.hpp"
+#include "observers/ErrorNorms.hpp"
 #include "reference/References.hpp"
 
 namespace ondine {
@@ -124,7 +125,7 @@ void channel(const Simulation<D>& sim, std::map<std::string, double>& e) {
   // of 1e-5 relative near the walls that halved the near-wall error of a fine Poiseuille run.)
   const int m = 1000;
   std::vector<double> table(m + 1);
-  for (int k = 0; k <= m; ++k) table[k] = reference::channel_startup(scene, L * k / m, t);
+  for (int k = 0; k <= m; ++k) table[k] = channel_startup(scene, L * k / m, t);
   Kokkos::View<double*, Kokkos::HostSpace> tab(table.data(), m + 1);
   double num = 0, den = 0, num_wall = 0, den_wall = 0;
   // with refinement zones: the SPH particles only (guards are interpolated copies), each with its radius
@@ -154,6 +155,37 @@ void channel(const Simulation<D>& sim, std::map<std::string, double>& e) {
   e["velocity_l2"] = std::sqrt(comm.sum(num) / comm.sum(den));
   den_wall = comm.sum(den_wall);
   if (den_wall > 0) e["velocity_l2_near_wall"] = std::sqrt(comm.sum(num_wall) / den_wall);
+}
+
+// a channel between an inlet and an outlet (reference.type open_channel): the developed plane
+// Poiseuille flow u(y) = 6 U_m y (H - y) / H^2, -dp/dx = 12 rho0 nu U_m / H^2, measured on
+// the SPH interpolation (sample_at) at the section x0 = origin.x: U_m the trapezoid mean of 19
+// points H/20 apart (u = 0 at the walls) against the inlet's U; the profile's largest departure
+// from the parabola of that mean, over u_max = 1.5 U_m; the gradient between the pressures at
+// mid-height at x0 - 1.5 H and x0 + 0.5 H against the one of that mean
+template <int D>
+void open_channel(const Simulation<D>& sim, std::map<std::string, double>& e) {
+  const Scene& scene = sim.scene();
+  const Reference& ref = scene.reference;
+  const double H = ref.length, x0 = ref.origin[0], y0 = ref.origin[1];
+  constexpr int m = 20;
+  std::vector<Vec3> pts;
+  for (int k = 1; k < m; ++k) pts.push_back({x0, y0 + H * k / m, 0});
+  pts.push_back({x0 - 1.5 * H, y0 + 0.5 * H, 0});
+  pts.push_back({x0 + 0.5 * H, y0 + 0.5 * H, 0});
+  const std::vector<ProbeSample> s = sim.sample_at(pts);
+  double mean = 0;
+  for (int k = 0; k < m - 1; ++k) mean += s[k].velocity[0] / m;
+  double worst = 0;
+  for (int k = 0; k < m - 1; ++k) {
+    const double eta = double(k + 1) / m;
+    worst = std::max(worst, std::abs(s[k].velocity[0] - 6 * mean * eta * (1 - eta)) / (1.5 * mean));
+  }
+  const double gradient = (s[m - 1].pressure - s[m].pressure) / (2 * H);
+  const double poiseuille = 12 * scene.rho0 * scene.nu * mean / (H * H);
+  e["mean_velocity_error"] = std::abs(mean / ref.velocity - 1);
+  e["profile_linf"] = worst;
+  e["pressure_gradient_error"] = std::abs(gradient / poiseuille - 1);
 }
 
 // the lid-driven cavity against Ghia et al. (1982) (reference.type ghia_re100, ghia_re1000)
@@ -258,6 +290,7 @@ std::map<std::string, double> reference_errors(const Simulation<D>& sim) {
     case ReferenceKind::GhiaRe1000: errors::cavity(sim, e); break;
     case ReferenceKind::Hydrostatic: errors::hydrostatic(sim, d, e); break;
     case ReferenceKind::Duct: errors::duct(sim, e); break;
+    case ReferenceKind::OpenChannel: errors::open_channel(sim, e); break;
     default: break;
   }
   return e;

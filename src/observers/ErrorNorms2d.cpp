@@ -1,4 +1,4 @@
-#include "reference/ErrorNormsImpl.hpp"
+#include "observers/ErrorNormsImpl.hpp"
 
 namespace ondine {
 template std::map<std::string, double> reference_errors(const Simulation<2>&);

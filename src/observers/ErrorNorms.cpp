@@ -1,9 +1,9 @@
-// buoyancy_error (reference/ErrorNorms.hpp): Archimedes' force on submerged bodies.
+// buoyancy_error (observers/ErrorNorms.hpp): Archimedes' force on submerged bodies.
 #include <algorithm>
 #include <cmath>
 
 #include "geometry/TriangleMesh.hpp"
-#include "reference/ErrorNorms.hpp"
+#include "observers/ErrorNorms.hpp"
 #include "reference/References.hpp"
 
 namespace ondine {

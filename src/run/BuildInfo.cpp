@@ -1,4 +1,4 @@
-#include "app/BuildInfo.hpp"
+#include "run/BuildInfo.hpp"
 
 #include <Kokkos_Core.hpp>
 

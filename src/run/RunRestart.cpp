@@ -1,4 +1,4 @@
-#include "solver/RunRestart.hpp"
+#include "run/RunRestart.hpp"
 
 #include <algorithm>
 #include <cstdio>
