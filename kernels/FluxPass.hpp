@@ -53,7 +53,6 @@ struct FluxPass {
     if (dm.data() != nullptr) dm(i) = s.dm;
   }
 
-  void run(int n) const { run(0, n); }
   // particles [first, end): the SPH particles of one APR level (contiguous)
   void run(int first, int end) const {
     const std::string label = "ondine::Flux[" + TermPack::names() + "]";

@@ -7,9 +7,8 @@
 // with R_d = 2 dx (the anisotropy measured very locally), w0_j = m_j / rho0, the particle's
 // initial volume (robustness, thesis 2.6.2), U_char = Ma c0 and n = n_out. In Vila's form the
 // masses change, and m_j / rho0 then weighs the heavier particles more, so the law also evens
-// out the masses; measured against the lattice volume dx^D in its place, with Vila's ALE form:
-// the dam-break impact's pressure noise 0.19 against 0.46 rho g 2a, the still tank's pressure
-// L-inf at 10 s 0.088 against 0.12 (docs/validation.md). The wall sum is
+// out the masses (quieter than the lattice volume dx^D in its place: docs/validation.md,
+// "Design choices in the kernels, measured"). The wall sum is
 // empty without walls and gamma_i is then 1. On a regular lattice n^ vanishes by symmetry, so
 // u0 = u; the cap keeps the transport within 25 % of Lagrangian, and u0 -> u as R -> 0 (2.115).
 //
@@ -20,8 +19,8 @@
 // moves with the fluid (kinematic condition) and the particles along it are still regularised.
 // A particle below the surface with surface particles within R_d (the band the original law keeps
 // Lagrangian, Fig. 2.5) keeps the part of du across the direction towards them, sum (x_s - x_i):
-// its own n~ is noise there, its support being almost whole (on a disordered flat surface the
-// second row kept 38 % of |du_n| / |du_t| with its n~, against 4 % on the surface; not in the seed).
+// its own n~ is noise there, its support being almost whole (not in the seed; measured in
+// docs/validation.md, "Design choices in the kernels, measured").
 //
 // Truncated supports (not in the seed): in Vila's ALE form the mass flux of a pair moves with the
 // mean transport velocity, so in a uniform state a particle's density changes at
@@ -30,13 +29,11 @@
 // So du_i loses its part along g_i, smoothly: du - (du . g) g / (|g|^2 + eps^2), eps = 0.1 / R,
 // which leaves an interior particle (|g| R of a few hundredths) almost untouched and makes the
 // correction tangential to walls and to the surface (before the surface projection above, which
-// has the last word: g and n~ differ by some degrees on a disordered surface). Measured with Vila's ALE form at 20 per
-// length: still tank pressure L-inf 0.017 against 0.038 without, immersed body buoyancy error
-// 0.013 against 0.145, free fall at Ma 0.3 density deviation 1e-4 against 0.27, and the
-// particles started on the walls no longer blow up (docs/validation.md). The price is in violent
-// flows, where the wall-normal part of (4.89) is what keeps the particles off the walls: without
-// the projection (scheme.ale.cut_supports: free) the dam break to T = 10 needs 213 guard
-// corrections and its impact has a pressure noise of 0.19 rho g 2a; with it, 19 979 and 1.27.
+// has the last word: g and n~ differ by some degrees on a disordered surface). Still water,
+// bodies at rest and free flights stay exact; the price is in violent flows, where the
+// wall-normal part of (4.89) is what keeps the particles off the walls, so
+// scheme.ale.cut_supports: free keeps it (both measured in docs/validation.md, "Design choices
+// in the kernels, measured").
 #include "kernels/NeighbourLoops.hpp"
 #include "kernels/VelocityGradientSum.hpp"
 #include "kernels/WallSet.hpp"

@@ -11,10 +11,10 @@
 // the bulk and next to a wall; where a free surface cuts the support M_i is not gamma_i I
 // and the plain divergence of a linear velocity field is wrong by O(|grad u|) in a layer R
 // thick (a particle at depth d: M_nn = gamma_i - d sum_FS W). At a large sound speed the
-// discrete continuity is then held to that wrong divergence: at c0 = 1480 m/s the dam-break
-// surge tip came out blunter and slower, the front 10.6 % (10 x 20) to 2.8 % (50 x 100)
-// behind the c0 = 10 U_max run's; the delta-SPH term (delta c0 R), which lets the density
-// relax over the flow time at c0 = 15 m/s, no longer does at c0 = 1480 (docs/validation.md).
+// discrete continuity is then held to that wrong divergence: at a real sound speed the
+// dam-break surge tip comes out blunter and slower; the delta-SPH term (delta c0 R), which lets
+// the density relax over the flow time at c0 = 15 m/s, no longer does at c0 = 1480
+// (docs/validation.md, "Design choices in the kernels, measured").
 // Not in the seed for the continuity equation: (2.42)-(2.44) and (4.86) are used there for
 // gradients and the free-surface normal. The renormalised divergence is exact for linear
 // fields whatever cuts the support, but no longer the exact adjoint of the pressure gradient
@@ -23,8 +23,8 @@
 // corner where a free surface meets a wall) the plain divergence is kept: there B_i = M_i^{-1}
 // amplifies the gap between the two operators, and as the renormalised divergence is not the
 // adjoint of the pressure gradient the acoustic system can then gain energy at a rate that
-// grows with c0. With min_det = 0.05 the dam break at c0 = 1480 m/s, 50 x 100, blew up from the
-// top of the column on the back wall (t = 0.06 s: 90 kPa there, 17 m/s at t = 0.065 s).
+// grows with c0 (a smaller min_det blew the dam break up at c0 = 1480 m/s: docs/validation.md,
+// "Design choices in the kernels, measured").
 // Run after the flux and wall passes, which have already added -rho_i tr(G_i)/gamma_i to
 // drho_i; this pass adds the difference (one more neighbour loop, only in scenes that ask).
 #include "kernels/NeighbourLoops.hpp"

@@ -22,11 +22,4 @@ struct Terms : T... {
   }
 };
 
-template <class X, class Pack>
-struct pack_has;
-template <class X, template <class...> class P, class... T>
-struct pack_has<X, P<T...>> {
-  static constexpr bool value = (std::is_same<X, T>::value || ...);
-};
-
 }  // namespace ondine

@@ -2,8 +2,8 @@
 // NFM wall continuity term (4.25): drho_i += -rho_i s_q ((u_q - u_i).n_out) W_iq.
 // Also in Vila's ALE form with the transport velocity: the wall part of the volume equation
 // with u0_i = u_i + du0_i in place of u_i was measured worse (a feedback: du0 carries a particle
-// towards the wall, the wall compresses it, its speed and so du0 grow; the still tank's E_k / E_p
-// at 10 s 3e-4 against 3e-6, pressure L-inf 0.34 against 0.088).
+// towards the wall, the wall compresses it, its speed and so du0 grow; docs/validation.md,
+// "Design choices in the kernels, measured").
 #include "kernels/wall/WallPointData.hpp"
 
 namespace ondine::wall {

@@ -296,7 +296,6 @@ class OutputFrame {
   ~OutputFrame() { sim_.finish_output(); }
   OutputFrame(const OutputFrame&) = delete;
   OutputFrame& operator=(const OutputFrame&) = delete;
-  Simulation<D>& simulation() const { return sim_; }
 
  private:
   Simulation<D>& sim_;
