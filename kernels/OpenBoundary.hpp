@@ -31,6 +31,7 @@
 #include "kernels/CellList.hpp"
 #include "kernels/Fields.hpp"
 #include "kernels/NeighbourLoops.hpp"
+#include "kernels/ParticleSetEdit.hpp"
 #include "kernels/PeriodicBox.hpp"
 #include "kernels/Vec.hpp"
 
@@ -146,69 +147,25 @@ struct OpenClassify {
   }
 };
 
-// exclusive scans of the kept particles and of the spawning ones
-struct OpenScan {
-  Kokkos::View<int*, MemSpace> action, kept_index, spawn_index;
-  struct value_type {
-    int kept, spawned;
-  };
-  KOKKOS_INLINE_FUNCTION void init(value_type& v) const { v.kept = v.spawned = 0; }
-  KOKKOS_INLINE_FUNCTION void join(volatile value_type& a, const volatile value_type& b) const {
-    a.kept += b.kept;
-    a.spawned += b.spawned;
-  }
-  KOKKOS_INLINE_FUNCTION void operator()(const int i, value_type& v, const bool final) const {
-    if (final) {
-      kept_index(i) = v.kept;
-      spawn_index(i) = v.spawned;
-    }
-    v.kept += action(i) != open_action::remove ? 1 : 0;
-    v.spawned += action(i) == open_action::spawn ? 1 : 0;
-  }
-};
-
-// the new order: the kept particles, then a copy of each spawning one; the spawning ones' ids
-template <int D>
-struct OpenOrder {
-  Kokkos::View<int*, MemSpace> action, kept_index, spawn_index, order, boundary_of_spawn, spawn_boundary;
-  Kokkos::View<std::int64_t*, MemSpace> spawn_source_id;
-  field_view_t<field::GlobalId, D> id;
-  int kept;
-  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
-    if (action(i) != open_action::remove) order(kept_index(i)) = i;
-    if (action(i) == open_action::spawn) {
-      const int k = spawn_index(i);
-      order(kept + k) = i;
-      boundary_of_spawn(k) = spawn_boundary(i);
-      spawn_source_id(k) = id(i);
-    }
-  }
-};
-
-// the spawned copies [kept, kept + n): moved L_b upstream, into the buffer, with new ids
-// next_id + (the rank of their source's id among all the sources of all ranks)
+// the spawned copies [kept, kept + n), after the gather (kernels/ParticleSetEdit.hpp): moved L_b
+// upstream, into the buffer of the boundary their source crossed (spawn_boundary, by the
+// source's index before the gather), with new ids next_id + (the rank of their source's id
+// among all the sources of all ranks)
 template <int D>
 struct OpenSpawnFill {
   OpenPlanes<D> planes;
   int kept;
-  Kokkos::View<int*, MemSpace> boundary_of_spawn;
-  Kokkos::View<std::int64_t*, MemSpace> spawn_source_id, all_sources;  // all_sources sorted
+  Kokkos::View<int*, MemSpace> spawners, spawn_boundary;
+  Kokkos::View<std::int64_t*, MemSpace> all_sources;  // sorted
   std::int64_t next_id;
   field_view_t<field::Position, D> x;
   field_view_t<field::GlobalId, D> id;
   field_view_t<field::OpenRole, D> role;
   KOKKOS_INLINE_FUNCTION void operator()(const int k) const {
-    const int j = kept + k, b = boundary_of_spawn(k);
+    const int j = kept + k, b = spawn_boundary(spawners(k));
     x(j, planes.axis[b]) -= planes.sign[b] * planes.L[b];
     role(j) = b + 1;
-    const std::int64_t src = spawn_source_id(k);
-    int lo = 0, hi = static_cast<int>(all_sources.extent(0));
-    while (lo < hi) {
-      const int mid = (lo + hi) / 2;
-      if (all_sources(mid) < src) lo = mid + 1;
-      else hi = mid;
-    }
-    id(j) = next_id + lo;
+    id(j) = edit::copy_id(all_sources, id(j), next_id, 1, 0);  // id(j): the source's, copied by the gather
   }
 };
 

@@ -1,11 +1,13 @@
 #pragma once
 // Refinement and derefinement bookkeeping of APR (thesis 5.4.1-5.4.3), as Kokkos
-// passes: classify each particle (keep, delete, refine), scan the survivors and
-// the refining mothers, the renormalised prolongation gradient on the mothers
+// passes: classify each particle (keep, delete, refine), the edit of the particle set
+// (kernels/ParticleSetEdit.hpp: the survivors and 2^D copies of each refining mother),
+// the renormalised prolongation gradient on the mothers
 // (5.20-5.21), the daughters (5.1, 5.3, 5.22), the roles (SPH particle or guard)
 // and the stable sort that makes each level contiguous. The host side is
 // src/solver/AdaptiveRefinement.hpp; the design is in docs/apr.md.
 #include "kernels/CellList.hpp"
+#include "kernels/ParticleSetEdit.hpp"
 #include "kernels/WallSet.hpp"
 #include "kernels/apr/RefinementZones.hpp"
 
@@ -83,44 +85,6 @@ struct DaughterRemoval {
   }
 };
 
-// exclusive scans: position of each survivor, rank of each refining mother
-struct ActionScan {
-  Kokkos::View<int*, MemSpace> action, kept_index, refine_index;
-  struct value_type {
-    int kept, refined;
-  };
-  KOKKOS_INLINE_FUNCTION void init(value_type& v) const { v.kept = v.refined = 0; }
-  KOKKOS_INLINE_FUNCTION void join(volatile value_type& a, const volatile value_type& b) const {
-    a.kept += b.kept;
-    a.refined += b.refined;
-  }
-  KOKKOS_INLINE_FUNCTION void operator()(const int i, value_type& v, const bool final) const {
-    if (final) {
-      kept_index(i) = v.kept;
-      refine_index(i) = v.refined;
-    }
-    v.kept += action(i) != Delete ? 1 : 0;
-    v.refined += action(i) == Refine ? 1 : 0;
-  }
-};
-
-// The gather order of the new particle set: survivors first (in order), then 2^D
-// copies of each refining mother (overwritten by DaughterFill); and the list of
-// refining mothers (old indices).
-template <int D>
-struct NewOrder {
-  Kokkos::View<int*, MemSpace> action, kept_index, refine_index, order, refining;
-  int kept;
-  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
-    if (action(i) == Delete) return;
-    order(kept_index(i)) = i;
-    if (action(i) != Refine) return;
-    const int k = refine_index(i);
-    refining(k) = i;
-    for (int c = 0; c < (1 << D); ++c) order(kept + (k << D) + c) = i;
-  }
-};
-
 // Renormalised gradient over the mothers only (5.20)-(5.21): for refining mother i
 // of level r, over the particles j of level r (any role) within R_r,
 //   B_i = (sum_j w_j (x_j - x_i) (x) grad_i W_ij)^{-1},  G(phi)_i = B_i^T sum_j w_j (phi_j - phi_i) grad_i W_ij,
@@ -194,9 +158,8 @@ struct DaughterFill {
   int kept;
   std::int64_t first_id;
   // the ids of all ranks' refining mothers, sorted: family k's daughters are numbered
-  // first_id + 2^D (the mother's rank in this list) + c, whatever the rank count
+  // first_id + 2^D (the mother's rank in this list) + c, whatever the rank count (edit::copy_id)
   Kokkos::View<std::int64_t*, MemSpace> families;
-  int nfamilies;
   field_view_t<field::Position, D> x;
   field_view_t<field::Velocity, D> u;
   field_view_t<field::Density, D> rho;
@@ -210,12 +173,7 @@ struct DaughterFill {
     const int mi = kept_index(refining(k));
     const int r = birth(mi);
     const double q = 0.25 * zones.dx[r];
-    int family = 0, hi = nfamilies;
-    while (family < hi) {  // the mother's rank among all refining mothers (binary search)
-      const int mid = (family + hi) / 2;
-      if (families(mid) < id(mi)) family = mid + 1;
-      else hi = mid;
-    }
+    const std::int64_t family_first = edit::copy_id(families, id(mi), first_id, 1 << D, 0);
     for (int c = 0; c < (1 << D); ++c) {
       const int f = kept + (k << D) + c;
       double off[D];
@@ -230,7 +188,7 @@ struct DaughterFill {
       for (int b = 0; b < D; ++b) rf += grad(k, D, b) * off[b];
       rho(f) = rf;
       m(f) = m(mi) / static_cast<double>(1 << D);
-      id(f) = first_id + (static_cast<std::int64_t>(family) << D) + c;
+      id(f) = family_first + c;
       birth(f) = r + 1;
       mother(f) = 0;
       parent(f) = id(mi);

@@ -184,8 +184,7 @@ class AdaptiveRefinement {
   // Returns the new owned count (halos dropped).
   int update(ParticleSet<D>& p, const CellList<D>& cells, const PeriodicBox<D>& box, int n, const Communicator& comm,
              const NearFacets<D>& walls = NearFacets<D>()) {
-    Kokkos::View<int*, MemSpace> action("ondine::APR::action", n), kept_index("ondine::APR::kept_index", n),
-        refine_index("ondine::APR::refine_index", n);
+    Kokkos::View<int*, MemSpace> action("ondine::APR::action", n);
     // the mother flags before this pass (a deleted mother takes its daughters along)
     Kokkos::View<int*, MemSpace> was_mother("ondine::APR::was_mother", n);
     Kokkos::deep_copy(was_mother, Kokkos::subview(p.get(field::AprMother{}), std::make_pair(0, n)));  // halos follow
@@ -206,22 +205,14 @@ class AdaptiveRefinement {
       Kokkos::parallel_for("ondine::APR::remove_daughters", Kokkos::RangePolicy<ExecSpace>(0, n),
                            apr::DaughterRemoval{action, p.get(field::AprBirthLevel{}), p.get(field::AprParent{}), all, l, total});
     }
-    apr::ActionScan::value_type totals;
-    Kokkos::parallel_scan("ondine::APR::scan", Kokkos::RangePolicy<ExecSpace>(0, n),
-                          apr::ActionScan{action, kept_index, refine_index}, totals);
-    const int kept = totals.kept, nref = totals.refined;
+    // the survivors, then 2^D copies of each refining mother (kernels/ParticleSetEdit.hpp)
+    const edit::Plan plan = edit::plan(action, n, apr::Delete, apr::Refine, 1 << D, "ondine::APR");
+    const int kept = plan.kept, nref = plan.spawned;
     const int nd = nref << D;
-    Kokkos::View<int*, MemSpace> order("ondine::APR::order", kept + nd), refining("ondine::APR::refining", nref);
-    Kokkos::parallel_for("ondine::APR::order", Kokkos::RangePolicy<ExecSpace>(0, n),
-                         apr::NewOrder<D>{action, kept_index, refine_index, order, refining, kept});
+    const Kokkos::View<int*, MemSpace> order = plan.order, refining = plan.spawners, kept_index = plan.kept_index;
     // the refining mothers of all ranks by id: a family's ids are next_id + 2^D (its rank in that order) + c
-    Kokkos::View<std::int64_t*, MemSpace> mine("ondine::APR::refining_ids", nref);
-    {
-      const auto id = p.get(field::GlobalId{});
-      Kokkos::parallel_for("ondine::APR::refining_ids", Kokkos::RangePolicy<ExecSpace>(0, nref),
-                           KOKKOS_LAMBDA(const int k) { mine(k) = id(refining(k)); });
-    }
-    const auto families = sorted_on_every_rank(mine, comm, "ondine::APR::families");
+    const auto families =
+        sorted_on_every_rank(edit::spawner_ids(plan, p.get(field::GlobalId{}), "ondine::APR"), comm, "ondine::APR::families");
     const std::int64_t nfam = static_cast<std::int64_t>(families.extent(0));
     deleted_ += comm.sum(static_cast<std::int64_t>(n - kept));
     refined_ += nfam;
@@ -238,7 +229,7 @@ class AdaptiveRefinement {
       });
       p.permute([&order](const auto& v) { return permuted(v, order); }, static_cast<std::size_t>(kept + nd));
       Kokkos::parallel_for("ondine::APR::daughters", Kokkos::RangePolicy<ExecSpace>(0, nref),
-                           apr::DaughterFill<D>{zones_, box, refining, kept_index, grad, kept, next_id_, families, static_cast<int>(nfam),
+                           apr::DaughterFill<D>{zones_, box, refining, kept_index, grad, kept, next_id_, families,
                                                 p.get(field::Position{}), p.get(field::Velocity{}), p.get(field::Density{}),
                                                 p.get(field::Mass{}), p.get(field::GlobalId{}), p.get(field::AprBirthLevel{}),
                                                 p.get(field::AprMother{}), p.get(field::AprParent{})});

@@ -157,10 +157,8 @@ class OpenBoundaries {
     Kokkos::parallel_for("ondine::Open::classify", Kokkos::RangePolicy<ExecSpace>(0, n),
                          OpenClassify<D>{planes_, p.get(field::Position{}), p.get(field::Mass{}), p.get(field::OpenRole{}), action, spawn_b,
                                          tally_});
-    Kokkos::View<int*, MemSpace> kept_index("ondine::Open::kept_index", n), spawn_index("ondine::Open::spawn_index", n);
-    OpenScan::value_type totals;
-    Kokkos::parallel_scan("ondine::Open::scan", Kokkos::RangePolicy<ExecSpace>(0, n), OpenScan{action, kept_index, spawn_index}, totals);
-    const int kept = totals.kept, ns = totals.spawned;
+    const edit::Plan plan = edit::plan(action, n, open_action::remove, open_action::spawn, 1, "ondine::Open");
+    const int kept = plan.kept, ns = plan.spawned;
     {
       auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), tally_);
       std::vector<double> v(static_cast<std::size_t>(4 * planes_.count));
@@ -180,15 +178,13 @@ class OpenBoundaries {
     removed_count_ += removed;
     changed = created + removed > 0;
     if (!changed) return n;
-    Kokkos::View<int*, MemSpace> order("ondine::Open::order", kept + ns), boundary_of_spawn("ondine::Open::boundary_of_spawn", ns);
-    Kokkos::View<std::int64_t*, MemSpace> source_id("ondine::Open::source_id", ns);
-    Kokkos::parallel_for("ondine::Open::order", Kokkos::RangePolicy<ExecSpace>(0, n),
-                         OpenOrder<D>{action, kept_index, spawn_index, order, boundary_of_spawn, spawn_b, source_id, p.get(field::GlobalId{}), kept});
-    const auto all_sources = sorted_on_every_rank(source_id, comm, "ondine::Open::all_sources");
+    const auto all_sources =
+        sorted_on_every_rank(edit::spawner_ids(plan, p.get(field::GlobalId{}), "ondine::Open"), comm, "ondine::Open::all_sources");
+    const Kokkos::View<int*, MemSpace> order = plan.order;
     p.permute([&order](const auto& v) { return permuted(v, order); }, static_cast<std::size_t>(kept + ns));
     if (ns > 0)
       Kokkos::parallel_for("ondine::Open::spawn", Kokkos::RangePolicy<ExecSpace>(0, ns),
-                           OpenSpawnFill<D>{planes_, kept, boundary_of_spawn, source_id, all_sources, next_id, p.get(field::Position{}),
+                           OpenSpawnFill<D>{planes_, kept, plan.spawners, spawn_b, all_sources, next_id, p.get(field::Position{}),
                                             p.get(field::GlobalId{}), p.get(field::OpenRole{})});
     next_id += created;
     return kept + ns;
