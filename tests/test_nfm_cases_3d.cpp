@@ -157,7 +157,8 @@ TEST_CASE("A rotating 3D wall: points, normals, velocities and the Shepard facto
     box.periodic[k] = false;
   }
   const double R = 0.25, t = 0.9, th = 0.7 * t, c = std::cos(th), s = std::sin(th);
-  WallModel<3> still(scene, box, R), turned(scene, box, R);
+  const double hq = wall_quadrature_spacing<3>(scene, scene.dx);
+  WallModel<3> still(scene, box, R, hq), turned(scene, box, R, hq);
   turned.move_to(t);
   auto x0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), still.points().x);
   auto n0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), still.points().n_out);

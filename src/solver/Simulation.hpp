@@ -246,12 +246,13 @@ class Simulation {
   void shift_particles();
   void check_state(double dt);
 
-  Scene scene_;
+  const Scene scene_;  // as parsed: what the solver derives lives in its own members
   Domain<D> domain_;
   ParticleSet<D> p_;
   int n_own_ = 0;
   std::int64_t lattice_first_ = 0;
   double R_, skin_len_ = 0;
+  double wall_spacing_ = 0;  // the wall quadrature's spacing (wall_quadrature_spacing)
   CompiledScheme<D> scheme_;  // every kernel-dependent pass, chosen once (Scheme.hpp)
   WallModel<D> walls_;
   LaplacianWeightView<D> laplacian_weights_;  // scratch of evaluate() (kernels/ConsistentLaplacian.hpp)

@@ -268,10 +268,8 @@ void Simulation<D>::build_level_walls() {
   level_walls_.clear();
   level_walls_.resize(levels);
   for (int l = 1; l < levels; ++l) {
-    Scene s = scene_;
-    // (3D: the scene's spacing is still 0 where the case left it to the default)
-    if (D == 3 && scene_.wall_quadrature_spacing == 0) s.wall_quadrature_spacing = kWallQuadratureSpacing3D * scene_.dx / (1 << l);
-    level_walls_[l] = WallModel<D>(s, domain_.box(), R_ / (1 << l), false);
+    const double spacing = D == 3 ? wall_quadrature_spacing<D>(scene_, scene_.dx / (1 << l)) : wall_spacing_;
+    level_walls_[l] = WallModel<D>(scene_, domain_.box(), R_ / (1 << l), spacing, false);
   }
 }
 

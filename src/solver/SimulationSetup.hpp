@@ -26,9 +26,10 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
   if (apr_on_) {
     if (restart && !restart->header.refinement.present)
       throw std::logic_error("Simulation<D>: a checkpoint without the APR state for a scene with refinement zones");
-    // 2D: every level's walls at the finest level's dx / 4 (3D: each level at its own spacing, build_level_walls)
-    if (D == 2 && scene_.wall_quadrature_spacing == 0) scene_.wall_quadrature_spacing = dx_finest / 4;
   }
+  // the wall quadrature's spacing; with zones in 2D every level's walls at the finest level's
+  // dx / 4 (3D: each level at its own spacing, build_level_walls)
+  wall_spacing_ = wall_quadrature_spacing<D>(scene, apr_on_ && D == 2 ? dx_finest : scene.dx);
   domain_ = Domain<D>(scene_, R_ + skin_len_, skin_len_);
   // this rank's share of the lattice or of the checkpoint; migrate() then sends
   // every particle to the owner of its cell
@@ -59,7 +60,7 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
   for (int k = 0; k < D; ++k) free_surface_possible = free_surface_possible || !scene.periodic[k];
   if (free_surface_possible) p_.allocate(field::FreeSurface{});
   if (walls) {
-    walls_ = WallModel<D>(scene_, domain_.box(), R_);
+    walls_ = WallModel<D>(scene_, domain_.box(), R_, wall_spacing_);
     if (apr_on_) build_level_walls();
     build_fluid_region();
   }

@@ -130,11 +130,10 @@ void add_mesh(const Wall& wall, int w, double hq, HostWalls& h) {
 }  // namespace
 
 template <int D>
-WallModel<D>::WallModel(const Scene& scene, const PeriodicBox<D>& box, double cutoff, bool facet_cells)
+WallModel<D>::WallModel(const Scene& scene, const PeriodicBox<D>& box, double cutoff, double spacing, bool facet_cells)
     : walls_(scene.walls), box_(box), cutoff_(cutoff), with_facet_cells_(facet_cells) {
   if (walls_.empty()) return;
-  const double hq = scene.wall_quadrature_spacing > 0 ? scene.wall_quadrature_spacing
-                                                      : (D == 2 ? scene.dx / 4 : kWallQuadratureSpacing3D * scene.dx);
+  const double hq = spacing;
   HostWalls h;
   for (std::size_t w = 0; w < walls_.size(); ++w) {
     const Wall& wall = walls_[w];

@@ -17,6 +17,14 @@ namespace ondine {
 // The default spacing of the 3D wall quadrature, in dx (geometry/TriangleQuadrature.hpp).
 constexpr double kWallQuadratureSpacing3D = 0.5;
 
+// The wall quadrature's spacing for particles of spacing dx: the case's
+// discretisation.wall_quadrature_spacing, or dx / 4 (2D) and kWallQuadratureSpacing3D dx (3D)
+template <int D>
+double wall_quadrature_spacing(const Scene& scene, double dx) {
+  if (scene.wall_quadrature_spacing > 0) return scene.wall_quadrature_spacing;
+  return D == 2 ? dx / 4 : kWallQuadratureSpacing3D * dx;
+}
+
 template <int D>
 class WallModel {
  public:
@@ -24,7 +32,8 @@ class WallModel {
   // facet_cells false: the points and their cells only, for a refinement level's walls (the
   // facet queries read the base model's facet cells), so no host rebuild of facet cells runs
   // when the walls move
-  WallModel(const Scene& scene, const PeriodicBox<D>& box, double cutoff, bool facet_cells = true);
+  // spacing: the quadrature points' spacing along the walls (m; wall_quadrature_spacing)
+  WallModel(const Scene& scene, const PeriodicBox<D>& box, double cutoff, double spacing, bool facet_cells = true);
 
   bool empty() const { return points_.count == 0; }
   int wall_count() const { return static_cast<int>(names_.size()); }
