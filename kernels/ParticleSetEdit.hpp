@@ -55,10 +55,11 @@ struct Order {
 struct Plan {
   int kept = 0, spawned = 0;
   Kokkos::View<int*, MemSpace> kept_index, spawn_index;
-  Kokkos::View<int*, MemSpace> order, spawners;  // kept + copies spawned; spawned
+  Kokkos::View<int*, MemSpace> order, spawners;  // kept + copies spawned; spawned (set by order())
 };
 
-inline Plan plan(const Kokkos::View<int*, MemSpace>& action, int n, int remove, int spawn, int copies, const std::string& label) {
+// the counts and positions (Scan): enough to learn whether the set changes
+inline Plan scan(const Kokkos::View<int*, MemSpace>& action, int n, int remove, int spawn, const std::string& label) {
   Plan p;
   p.kept_index = Kokkos::View<int*, MemSpace>(label + "::kept_index", n);
   p.spawn_index = Kokkos::View<int*, MemSpace>(label + "::spawn_index", n);
@@ -67,10 +68,21 @@ inline Plan plan(const Kokkos::View<int*, MemSpace>& action, int n, int remove, 
                         totals);
   p.kept = totals.kept;
   p.spawned = totals.spawned;
+  return p;
+}
+
+// the gather order and the spawners (Order) of a scanned plan
+inline void order(Plan& p, const Kokkos::View<int*, MemSpace>& action, int n, int remove, int spawn, int copies,
+                  const std::string& label) {
   p.order = Kokkos::View<int*, MemSpace>(label + "::order", p.kept + copies * p.spawned);
   p.spawners = Kokkos::View<int*, MemSpace>(label + "::spawners", p.spawned);
   Kokkos::parallel_for(label + "::order", Kokkos::RangePolicy<ExecSpace>(0, n),
                        Order{action, p.kept_index, p.spawn_index, p.order, p.spawners, remove, spawn, p.kept, copies});
+}
+
+inline Plan plan(const Kokkos::View<int*, MemSpace>& action, int n, int remove, int spawn, int copies, const std::string& label) {
+  Plan p = scan(action, n, remove, spawn, label);
+  order(p, action, n, remove, spawn, copies, label);
   return p;
 }
 

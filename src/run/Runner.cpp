@@ -307,15 +307,10 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
     // change against created - removed, the fluid region's against in - out
     const Diagnostics d = sim.diagnostics();
     const OpenBoundaries<D>& ob = sim.open_boundaries();
-    double created = 0, removed = 0, in = 0, out = 0;
-    for (const OpenFlux& f : ob.fluxes()) {
-      created += f.created;
-      removed += f.removed;
-      in += f.mass_in;
-      out += f.mass_out;
-    }
-    report.errors["open_mass_balance"] = std::abs(d.mass - ob.initial_mass() - (created - removed)) / ob.initial_mass();
-    report.errors["open_fluid_mass_balance"] = std::abs(d.fluid_mass - ob.initial_fluid_mass() - (in - out)) / ob.initial_mass();
+    const OpenFlux t = ob.total();
+    report.errors["open_mass_balance"] = std::abs(d.mass - ob.initial_mass() - (t.created - t.removed)) / ob.initial_mass();
+    report.errors["open_fluid_mass_balance"] =
+        std::abs(d.fluid_mass - ob.initial_fluid_mass() - (t.mass_in - t.mass_out)) / ob.initial_mass();
   }
   if (scene.reference.kind == ReferenceKind::Hydrostatic && sim.has_walls() && !diverged) {
     const double worst = buoyancy_error(scene, sim.wall_forces());

@@ -114,6 +114,17 @@ class OpenBoundaries {
   bool on() const { return planes_.count > 0; }
   const OpenPlanes<D>& planes() const { return planes_; }
   const std::vector<OpenFlux>& fluxes() const { return flux_; }
+  // the sum over the boundaries (mass balances: created - removed, in - out)
+  OpenFlux total() const {
+    OpenFlux t{"total"};
+    for (const OpenFlux& f : flux_) {
+      t.mass_in += f.mass_in;
+      t.mass_out += f.mass_out;
+      t.created += f.created;
+      t.removed += f.removed;
+    }
+    return t;
+  }
   std::int64_t created_count() const { return created_count_; }
   std::int64_t removed_count() const { return removed_count_; }
   std::int64_t next_id() const { return next_id_; }
@@ -157,7 +168,7 @@ class OpenBoundaries {
     Kokkos::parallel_for("ondine::Open::classify", Kokkos::RangePolicy<ExecSpace>(0, n),
                          OpenClassify<D>{planes_, p.get(field::Position{}), p.get(field::Mass{}), p.get(field::OpenRole{}), action, spawn_b,
                                          tally_});
-    const edit::Plan plan = edit::plan(action, n, open_action::remove, open_action::spawn, 1, "ondine::Open");
+    edit::Plan plan = edit::scan(action, n, open_action::remove, open_action::spawn, "ondine::Open");
     const int kept = plan.kept, ns = plan.spawned;
     {
       auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), tally_);
@@ -178,6 +189,7 @@ class OpenBoundaries {
     removed_count_ += removed;
     changed = created + removed > 0;
     if (!changed) return n;
+    edit::order(plan, action, n, open_action::remove, open_action::spawn, 1, "ondine::Open");
     const auto all_sources =
         sorted_on_every_rank(edit::spawner_ids(plan, p.get(field::GlobalId{}), "ondine::Open"), comm, "ondine::Open::all_sources");
     const Kokkos::View<int*, MemSpace> order = plan.order;
