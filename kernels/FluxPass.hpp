@@ -53,7 +53,8 @@ struct FluxPass {
     if (dm.data() != nullptr) dm(i) = s.dm;
   }
 
-  // particles [first, end): the SPH particles of one APR level (contiguous)
+  // particles [first, end): the SPH particles of one APR level (contiguous); built from the
+  // pass context by solver/FluxDispatch.hpp
   void run(int first, int end) const {
     const std::string label = "ondine::Flux[" + TermPack::names() + "]";
     Kokkos::parallel_for(label, Kokkos::RangePolicy<ExecSpace>(first, end), *this);

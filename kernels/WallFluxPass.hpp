@@ -32,32 +32,14 @@
 // first row at 0.01 dx: E = -0.074/dx along n_out) is kept: it restores the clearance.
 // The extra neighbour loop runs only for those particles.
 #include "kernels/ConsistentLaplacian.hpp"
-#include "kernels/FluxArgs.hpp"
 #include "kernels/NeighbourLoops.hpp"
+#include "kernels/PassContext.hpp"
 #include "kernels/WallPressure.hpp"
 #include "kernels/WallSet.hpp"
 #include "kernels/WallVelocityState.hpp"
 #include "kernels/wall/WallPointData.hpp"
 
 namespace ondine {
-
-// What a wall flux pass reads: the level's flux arguments (state views, list, box, body
-// force, P_min, the range [first, first + n) and R) and the walls.
-template <int D>
-struct WallFluxArgs {
-  FluxArgs<D> fluid;
-  WallPoints<D> wall;
-  CellList<D> wall_cells;  // the wall points binned at the level's radius
-  field_view_t<field::ShepardGamma, D> gamma;
-  LaplacianWeightView<D> weights;  // the consistent Laplacian's (A_i, b_i), with no-slip walls
-  WallEos eos;
-  double nu = 0;          // the scene's viscosity (no lattice factor: the wall term has its own quadrature)
-  double clearance = 0;   // dx / 2 of the level: the wall-ward correction acts closer than this
-  bool velocity_muscl = false;  // scheme.wall_velocity_reconstruction: the MUSCL state of u (4.30)
-};
-
-template <int D>
-using WallFluxFunction = void (*)(const WallFluxArgs<D>&);
 
 template <int D, class Kernel, class Pack>
 struct WallFluxPass {
@@ -83,11 +65,10 @@ struct WallFluxPass {
   bool velocity_muscl = false;     // scheme.wall_velocity_reconstruction: the MUSCL state of u (4.30)
   Pack terms;
 
-  WallFluxPass(const WallFluxArgs<D>& a, const Pack& pack)
-      : wall(a.wall), wall_cells(a.wall_cells), W(a.fluid.R), R2(a.fluid.R * a.fluid.R), body(a.fluid.body), eos(a.eos),
-        box(a.fluid.box), P_min(a.fluid.P_min), x(a.fluid.x), u(a.fluid.u), rho(a.fluid.rho), P(a.fluid.P),
-        grad_rho(a.fluid.grad_rho), gamma(a.gamma), du(a.fluid.du), drho(a.fluid.drho), list(a.fluid.list), m(a.fluid.m),
-        clearance(a.clearance), velocity_muscl(a.velocity_muscl), terms(pack) {}
+  WallFluxPass(const PassContext<D>& c, const Pack& pack)
+      : wall(c.wall), wall_cells(c.wall_cells), W(c.R), R2(c.R * c.R), body(c.body), eos(c.eos), box(c.box), P_min(c.P_min),
+        x(c.x), u(c.u), rho(c.rho), P(c.P), grad_rho(c.grad_rho), gamma(c.gamma), du(c.du), drho(c.drho), list(c.list), m(c.m),
+        clearance(c.clearance), velocity_muscl(c.velocity_muscl), terms(pack) {}
 
   // E_i's fluid part sum_P w_j grad_i W_ij (only for particles next to a wall).
   KOKKOS_INLINE_FUNCTION Vec<D> fluid_gradient_sum(const int i, const Vec<D>& xi) const {

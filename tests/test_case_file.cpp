@@ -2,7 +2,10 @@
 // that names the file, the line and the key.
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+
 #include "scene/CaseFile.hpp"
+#include "scene/FluxSchemes.hpp"
 
 using namespace ondine;
 using Catch::Matchers::Contains;
@@ -176,4 +179,24 @@ fluid_blocks: [{min: [0, 0], max: [0.4, 1]}]
 time: {duration: 1, output_interval: 1}
 )";
   CHECK_THROWS_WITH(ondine::parse_case(y, "wall.yaml"), Catch::Contains("key 'walls[0].points': a wall must lie within the domain along the periodic axis x"));
+}
+
+TEST_CASE("Every shipped case file selects a built flux scheme; another is refused naming its keys", "[unit][case]") {
+  namespace fs = std::filesystem;
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(std::string(ONDINE_SOURCE_DIR) + "/cases")) {
+    if (e.path().extension() != ".yaml") continue;
+    INFO(e.path().string());
+    const Scene s = load_case(e.path().string());
+    CHECK(flux_scheme_index(flux_key(s)) >= 0);
+    ++n;
+  }
+  CHECK(n >= 20);
+  // Riemann-SPH first order with the plain Morris term and the background pressure: not a row of the table
+  const std::vector<std::string> sets = {"scheme.flux=riemann", "scheme.delta_sph=0", "scheme.riemann.reconstruction=none",
+                                         "scheme.background_pressure=true"};
+  CHECK_THROWS_WITH(load_case(std::string(ONDINE_SOURCE_DIR) + "/cases/poiseuille_2d.yaml", sets),
+                    Contains("selects a flux scheme that is not built (scheme.flux: riemann") &&
+                        Contains("scheme.riemann.reconstruction: none") && Contains("scheme.background_pressure: true") &&
+                        Contains("the built ones are:"));
 }

@@ -1,5 +1,6 @@
 #pragma once
 #include "kernels/PairData.hpp"
+#include "kernels/PassContext.hpp"
 namespace ondine::term {
 // Monaghan artificial viscosity, thesis (2.58)-(2.59), one radius R for all particles:
 //   Pi_ij = -(1/16) alpha (rho_i + rho_j)(2R)(c_i + c_j) mu_ij, mu_ij = u_ij.x_ij/(r^2 + eps R^2) if < 0,
@@ -7,6 +8,8 @@ namespace ondine::term {
 // The sound speed is taken as c0 (Ma <= 0.1 keeps c within 1 % of c0); eps = 0.01.
 struct ArtificialViscosity {
   static constexpr const char* name = "artificial_viscosity";
+  template <int D>
+  static ArtificialViscosity from(const PassContext<D>& c) { return {c.av_alpha_R_c0, 0.01 * c.R * c.R}; }
   double alpha_R_c0;  // alpha * R * c0
   double eps_R2;      // 0.01 R^2
   template <int D>

@@ -1,10 +1,13 @@
 #pragma once
 #include "kernels/PairData.hpp"
+#include "kernels/PassContext.hpp"
 namespace ondine::term {
 // Tensile-instability correction, thesis (2.105): -(2 P_min / rho_i) w_j grad_i W_ij with
 // P_min = max(0, -min_k P_k), a global reduction before the pass. Flows without a free surface only.
 struct BackgroundPressure {
   static constexpr const char* name = "background_pressure";
+  template <int D>
+  static BackgroundPressure from(const PassContext<D>& c) { return {c.P_min}; }
   double P_min;
   template <int D>
   KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {

@@ -1,5 +1,6 @@
 #pragma once
 #include "kernels/ConsistentLaplacian.hpp"
+#include "kernels/PassContext.hpp"
 #include "kernels/PairData.hpp"
 namespace ondine::term {
 // The Morris Laplacian (2.31) with the direction-dependent weight s_i(x_ij) of
@@ -10,6 +11,7 @@ namespace ondine::term {
 template <int D>
 struct ConsistentMorrisViscosity {
   static constexpr const char* name = "consistent_morris_viscosity";
+  static ConsistentMorrisViscosity from(const PassContext<D>& c) { return {c.nu_pair, c.weights}; }
   double nu;
   LaplacianWeightView<D> weights;
   KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {

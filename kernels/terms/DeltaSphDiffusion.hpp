@@ -1,5 +1,6 @@
 #pragma once
 #include "kernels/Fields.hpp"
+#include "kernels/PassContext.hpp"
 #include "kernels/PairData.hpp"
 #include "kernels/PeriodicBox.hpp"
 namespace ondine::term {
@@ -10,6 +11,7 @@ namespace ondine::term {
 template <int D>
 struct DeltaSphDiffusion {
   static constexpr const char* name = "delta_sph";
+  static DeltaSphDiffusion from(const PassContext<D>& c) { return {c.delta_coeff, c.grad_rho}; }
   double coeff;  // delta c0 R
   field_view_t<field::DensityGradient, D> grad_rho;
   KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {

@@ -1,11 +1,14 @@
 #pragma once
 #include "kernels/PairData.hpp"
+#include "kernels/PassContext.hpp"
 namespace ondine::term {
 // Morris et al. (1997) laminar viscosity, the Laplacian L_MEA of thesis (2.31)
 // in its momentum-conserving form: nu w_j (rho_i + rho_j)/rho_i (x_ij . grad_i W_ij)/r^2 u_ij,
 // which equals nu L_MEA(u)_i when rho_i = rho_j.
 struct MorrisViscosity {
   static constexpr const char* name = "morris_viscosity";
+  template <int D>
+  static MorrisViscosity from(const PassContext<D>& c) { return {c.nu_pair}; }
   double nu;
   template <int D>
   KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {

@@ -8,6 +8,7 @@
 // muscl_midpoint). P_E and u_E n_ij are symmetric in the pair, so momentum is conserved to
 // round-off; the masses are constant, so mass is exactly.
 #include "kernels/Fields.hpp"
+#include "kernels/PassContext.hpp"
 #include "kernels/Math.hpp"
 #include "kernels/PairData.hpp"
 #include "kernels/VelocityGradientSum.hpp"
@@ -62,6 +63,10 @@ namespace term {
 template <int D, bool Muscl>
 struct RiemannLeduc {
   static constexpr const char* name = Muscl ? "riemann_leduc_muscl" : "riemann_leduc";
+  static RiemannLeduc from(const PassContext<D>& c) {
+    if constexpr (Muscl) return {c.eos, c.riemann_eta, c.grad_rho, c.grad_u};
+    else return {c.eos, c.riemann_eta, {}, {}};
+  }
   WallEos eos;  // c(rho) of (1.9); P(rho^) = P_i + c_i^2 (rho^ - rho_i), exact for the linear law
   double eta = 0;  // > 0: the low-dissipation pressure of Zhang et al. (low_dissipation_riemann)
   field_view_t<field::DensityGradient, D> grad_rho;  // Muscl only

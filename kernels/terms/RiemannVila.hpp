@@ -15,6 +15,7 @@
 // fluxes are antisymmetric in the pair: mass and momentum (sum m u) are conserved to round-off by
 // the rates; the integrator advances u and m, so sum m u drifts at the time-step error only.
 #include "kernels/terms/RiemannLeduc.hpp"
+#include "kernels/PassContext.hpp"
 
 namespace ondine {
 namespace term {
@@ -22,6 +23,8 @@ namespace term {
 template <int D, bool Muscl>
 struct RiemannVila {
   static constexpr const char* name = Muscl ? "riemann_vila_muscl" : "riemann_vila";
+  // u0 = u + du0 enters the fluxes with the transport velocity (scheme.transport: ale)
+  static RiemannVila from(const PassContext<D>& c) { return {RiemannLeduc<D, Muscl>::from(c), c.m, c.du0}; }
   RiemannLeduc<D, Muscl> riemann;                     // the midpoint states and the solver
   field_view_t<field::Mass, D> m;                     // m_i: w_i = m_i / rho_i
   field_view_t<field::TransportCorrection, D> du0;    // u0 = u + du0 when allocated (scheme.transport: ale)

@@ -5,11 +5,14 @@
 // towards the wall, the wall compresses it, its speed and so du0 grow; docs/validation.md,
 // "Design choices in the kernels, measured").
 #include "kernels/wall/WallPointData.hpp"
+#include "kernels/PassContext.hpp"
 
 namespace ondine::wall {
 
 struct Continuity {
   static constexpr const char* name = "wall_continuity";
+  template <int D>
+  static Continuity from(const PassContext<D>&) { return {}; }
   template <int D>
   KOKKOS_INLINE_FUNCTION void point(const WallParticle<D>& p, const WallPoint<D>& w, WallSum<D>& s) const {
     s.drho -= p.rho_i * dot(w.uq - p.ui, w.n) * w.Wq;

@@ -5,6 +5,7 @@
 // exact for linear and quadratic fields (kernels/ConsistentLaplacian.hpp), as the fluid
 // pairs carry it.
 #include "kernels/ConsistentLaplacian.hpp"
+#include "kernels/PassContext.hpp"
 #include "kernels/WallPressure.hpp"
 #include "kernels/wall/WallPointData.hpp"
 
@@ -13,6 +14,7 @@ namespace ondine::wall {
 template <int D, bool Consistent>
 struct NoSlipViscosity {
   static constexpr const char* name = Consistent ? "wall_no_slip_consistent" : "wall_no_slip";
+  static NoSlipViscosity from(const PassContext<D>& c) { return {c.nu, 0.05 * c.R, c.wall.no_slip, c.weights}; }
   double nu;
   double min_dn;                        // 0.05 R
   Kokkos::View<int*, MemSpace> no_slip;  // per wall point: 1 no-slip, 0 slip

@@ -5,12 +5,15 @@
 // (2.105): its wall counterpart keeps the shift of the fluid sum from pushing particles
 // into the wall (sum_P w grad W + sum_S s W n = 0). P_min = 0 without it.
 #include "kernels/WallPressure.hpp"
+#include "kernels/PassContext.hpp"
 #include "kernels/wall/WallPointData.hpp"
 
 namespace ondine::wall {
 
 struct PressureFlux {
   static constexpr const char* name = "wall_pressure";
+  template <int D>
+  static PressureFlux from(const PassContext<D>& c) { return {c.P_min}; }
   double P_min;
   template <int D>
   KOKKOS_INLINE_FUNCTION void point(const WallParticle<D>& p, const WallPoint<D>& w, WallSum<D>& s) const {

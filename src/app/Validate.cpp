@@ -12,6 +12,7 @@
 #include "app/ValidationCatalogue.hpp"
 #include "SourceCommit.hpp"  // generated: cmake/SourceCommit.cmake
 #include "scene/CaseFile.hpp"
+#include "scene/FluxSchemes.hpp"
 #include "run/Runner.hpp"
 
 namespace ondine {
@@ -255,6 +256,33 @@ void observed_orders(const ValidateOptions& opt, const ValidationCase& c,
   }
 }
 
+// --dry-run: every run the options choose (each rung, its contrast run) resolved to its scene and
+// named flux scheme (scene/FluxSchemes.hpp), nothing run; false when a case file or its
+// overrides are refused (the reader's message on stderr)
+bool resolve_runs(const ValidateOptions& opt, const std::vector<const ValidationCase*>& chosen) {
+  bool ok = true;
+  for (const ValidationCase* c : chosen)
+    for (const Rung& r : c->ladder) {
+      if (r.full_only && opt.level != "full") continue;
+      std::vector<std::vector<std::string>> runs{rung_sets(opt, *c, r)};
+      if (!c->contrast.empty()) {
+        runs.push_back(runs.front());
+        runs.back().insert(runs.back().end(), c->contrast.begin(), c->contrast.end());
+      }
+      for (const std::vector<std::string>& sets : runs) {
+        try {
+          const Scene s = load_case(opt.source_dir + "/" + (r.file.empty() ? c->file : r.file), sets);
+          std::printf("%s %s dx %g flux scheme %s\n", c->name.c_str(), r.variant.c_str(), r.dx,
+                      flux_schemes[flux_scheme_index(flux_key(s))].name);  // the reader refuses a scheme not built
+        } catch (const std::exception& e) {
+          std::fprintf(stderr, "ondine validate: %s (dx %g): %s\n", c->name.c_str(), r.dx, e.what());
+          ok = false;
+        }
+      }
+    }
+  return ok;
+}
+
 }  // namespace
 
 int run_validation(const ValidateOptions& opt) {
@@ -264,6 +292,7 @@ int run_validation(const ValidateOptions& opt) {
     for (const ValidationCase& c : catalogue()) std::printf("%s %s %s\n", c.name.c_str(), group_of(c.name).c_str(), c.file.c_str());
     return 0;
   }
+  if (opt.dry_run) return resolve_runs(opt, chosen) ? 0 : 1;
   std::filesystem::create_directories(opt.out_dir);
   Report report;
   report.commit = ONDINE_SOURCE_COMMIT;

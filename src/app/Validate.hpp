@@ -18,6 +18,7 @@ struct ValidateOptions {
   // (scheme_sets() in Validate.cpp); an entry's own overrides still win
   std::string flux = "case", transport = "case";
   bool list = false;  // --list: print the catalogue (name, group, case file) and run nothing
+  bool dry_run = false;  // --dry-run: resolve every chosen run's scene and flux scheme, run nothing
 };
 
 // Returns the process exit code: 0 when every run passed its thresholds.

@@ -74,6 +74,8 @@ int run_app(int argc, char** argv, int ranks, int rank, const std::string& no_de
   validate->add_option("--level", vopt.level, "quick (the CI subset) or full (the whole ladder)");
   validate->add_option("--out", vopt.out_dir, "output folder (default: out/validation)");
   validate->add_flag("--list", vopt.list, "print the validation cases (name, group, case file) and run nothing");
+  validate->add_flag("--dry-run", vopt.dry_run,
+                     "resolve every chosen run (case file, overrides, named flux scheme) and run nothing; exit 1 when one is refused");
   validate->add_option("--flux", vopt.flux,
                        "case (each case file's), delta_sph, riemann (Riemann-SPH with MUSCL, Leduc's form) or riemann_vila (Vila's form with mass fluxes): the fluid flux of every run (docs/case-file.md scheme.flux)");
   validate->add_option("--transport", vopt.transport,

@@ -14,7 +14,6 @@
 #include "run/BuildInfo.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/Checkpoint.hpp"
-#include "observers/ErrorNorms.hpp"
 #include "run/RunRecorder.hpp"
 #include "run/RunRestart.hpp"
 #include "solver/Simulation.hpp"
@@ -300,22 +299,7 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
   report.simulated_time = sim.time();
   report.wall_seconds = seconds_since(timing.wall0);
   report.cpu_seconds = static_cast<double>(std::clock() - timing.cpu0) / CLOCKS_PER_SEC;
-  if (!diverged) report.errors = reference_errors(sim);
-  recorder.add_figures(report.errors, sim.diagnostics().mass, diverged);
-  if (sim.open_on()) {
-    // the open boundaries' mass balances, relative to the initial mass: the particle set's
-    // change against created - removed, the fluid region's against in - out
-    const Diagnostics d = sim.diagnostics();
-    const OpenBoundaries<D>& ob = sim.open_boundaries();
-    const OpenFlux t = ob.total();
-    report.errors["open_mass_balance"] = std::abs(d.mass - ob.initial_mass() - (t.created - t.removed)) / ob.initial_mass();
-    report.errors["open_fluid_mass_balance"] =
-        std::abs(d.fluid_mass - ob.initial_fluid_mass() - (t.mass_in - t.mass_out)) / ob.initial_mass();
-  }
-  if (scene.reference.kind == ReferenceKind::Hydrostatic && sim.has_walls() && !diverged) {
-    const double worst = buoyancy_error(scene, sim.wall_forces());
-    if (worst >= 0) report.errors["buoyancy_error"] = worst;
-  }
+  recorder.add_figures(report.errors, sim, diverged);
   const nlohmann::json j = run_summary(scene, opt, sim, report, timing, restarting ? &restart.header : nullptr, checkpoints,
                                        recorder.snapshot_count());
   if (root) write_text_atomically(opt.out_dir + "/summary.json", j.dump(2) + "\n");

@@ -51,6 +51,7 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
   read_forces(r, root, s);
   read_scheme(r, root, s);
   check_viscosity(r, root, s);
+  check_flux_scheme(r, root, s);
   read_sound_speed(r, root, s);
   read_time(r, root, s);
   read_parallel(r, root, s);

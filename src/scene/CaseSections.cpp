@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "scene/CaseSections.hpp"
+#include "scene/FluxSchemes.hpp"
 
 #include "scene/MemoryEstimate.hpp"
 
@@ -201,6 +202,14 @@ void check_viscosity(const Reader& r, YAML::Node& root, const Scene& s) {
     r.fail(fl, "fluid.viscosity", "scheme.viscous_term is set, so fluid.viscosity must be > 0");
   if (s.viscous_term == ViscousTerm::None && s.nu > 0)
     r.fail(fl["viscosity"], "fluid.viscosity", "is > 0 but scheme.viscous_term is none; choose morris or monaghan_gingold");
+}
+
+void check_flux_scheme(const Reader& r, YAML::Node& root, const Scene& s) {
+  const FluxKey k = flux_key(s);
+  if (flux_scheme_index(k) >= 0) return;
+  r.fail(root["scheme"], "scheme",
+         "selects a flux scheme that is not built (" + describe(k) + "); the built ones are:\n" + list_flux_schemes() +
+             "(a row of src/scene/FluxSchemes.hpp builds another)");
 }
 
 // sound speed: a number, or auto = reference_velocity / mach

@@ -28,6 +28,8 @@ void read_fluid(const Reader& r, YAML::Node& root, Scene& s);
 void read_forces(const Reader& r, YAML::Node& root, Scene& s);
 void read_scheme(const Reader& r, YAML::Node& root, Scene& s);
 void check_viscosity(const Reader& r, YAML::Node& root, const Scene& s);
+// the scheme keys select one of the named flux schemes (scene/FluxSchemes.hpp)
+void check_flux_scheme(const Reader& r, YAML::Node& root, const Scene& s);
 void read_sound_speed(const Reader& r, YAML::Node& root, Scene& s);
 void read_time(const Reader& r, YAML::Node& root, Scene& s);
 void read_parallel(const Reader& r, YAML::Node& root, Scene& s);

@@ -1,13 +1,15 @@
 #pragma once
-// The one place where the scene's runtime choices become template arguments:
-// the term pack of the flux pass is assembled from the scheme options, so a
-// term the scene does not enable is absent from the compiled pair loop.
-// Instantiated in FluxDispatch_<D>d_<kernel>.cpp, one translation unit per
-// (dimension, kernel) so that the build parallelises.
+// The one place where the scene's runtime choices become template arguments: each row of the
+// named flux schemes (scene/FluxSchemes.hpp) becomes a term pack, so a term the scene does not
+// enable is absent from its compiled pair loop, and only the table's rows are compiled.
+// Instantiated in FluxDispatch_<D>d_<kernel>.cpp, one translation unit per (dimension,
+// kernel) so that the build parallelises.
+#include <stdexcept>
 #include <type_traits>
+#include <utility>
 
-#include "kernels/FluxArgs.hpp"
 #include "kernels/FluxPass.hpp"
+#include "kernels/PassContext.hpp"
 #include "kernels/terms/ArtificialViscosity.hpp"
 #include "kernels/terms/BackgroundPressure.hpp"
 #include "kernels/terms/ConsistentMorrisViscosity.hpp"
@@ -18,7 +20,7 @@
 #include "kernels/terms/PressureGradient.hpp"
 #include "kernels/terms/RiemannLeduc.hpp"
 #include "kernels/terms/RiemannVila.hpp"
-#include "scene/Scene.hpp"
+#include "scene/FluxSchemes.hpp"
 
 namespace ondine {
 
@@ -27,72 +29,91 @@ struct TypeList {};
 
 namespace detail {
 
-template <int D, class T>
-T make_term(const FluxArgs<D>& a) {
-  if constexpr (std::is_same<T, term::DeltaSphDiffusion<D>>::value) return T{a.delta_coeff, a.grad_rho};
-  else if constexpr (std::is_same<T, term::MorrisViscosity>::value) return T{a.nu};
-  else if constexpr (std::is_same<T, term::ConsistentMorrisViscosity<D>>::value) return T{a.nu, a.laplacian_weights};
-  else if constexpr (std::is_same<T, term::MonaghanGingoldViscosity>::value) return T{a.nu};
-  else if constexpr (std::is_same<T, term::ArtificialViscosity>::value) return T{a.av_alpha_R_c0, 0.01 * a.R * a.R};
-  else if constexpr (std::is_same<T, term::BackgroundPressure>::value) return T{a.P_min};
-  else if constexpr (std::is_same<T, term::RiemannLeduc<D, true>>::value) return T{a.eos, a.riemann_eta, a.grad_rho, a.grad_u};
-  else if constexpr (std::is_same<T, term::RiemannLeduc<D, false>>::value) return T{a.eos, a.riemann_eta, {}, {}};
-  else if constexpr (std::is_same<T, term::RiemannVila<D, true>>::value)
-    return T{make_term<D, term::RiemannLeduc<D, true>>(a), a.m, a.du0};
-  else if constexpr (std::is_same<T, term::RiemannVila<D, false>>::value)
-    return T{make_term<D, term::RiemannLeduc<D, false>>(a), a.m, a.du0};
-  else return T{};
-}
+template <class... A, class... B, class... C, class... E>
+TypeList<A..., B..., C..., E...> concat(TypeList<A...>, TypeList<B...>, TypeList<C...>, TypeList<E...>);
+
+// the pressure and continuity part of a key (scene/FluxSchemes.hpp); Riemann-SPH replaces the
+// centred pressure gradient and continuity
+template <int D, FluxBase B>
+struct BaseTerms {
+  using type = TypeList<term::PressureGradient, term::Continuity>;
+};
+template <int D>
+struct BaseTerms<D, FluxBase::CentredDeltaSph> {
+  using type = TypeList<term::PressureGradient, term::Continuity, term::DeltaSphDiffusion<D>>;
+};
+template <int D>
+struct BaseTerms<D, FluxBase::Leduc> {
+  using type = TypeList<term::RiemannLeduc<D, false>>;
+};
+template <int D>
+struct BaseTerms<D, FluxBase::LeducMuscl> {
+  using type = TypeList<term::RiemannLeduc<D, true>>;
+};
+template <int D>
+struct BaseTerms<D, FluxBase::Vila> {
+  using type = TypeList<term::RiemannVila<D, false>>;
+};
+template <int D>
+struct BaseTerms<D, FluxBase::VilaMuscl> {
+  using type = TypeList<term::RiemannVila<D, true>>;
+};
+
+template <int D, PairViscosity V>
+struct ViscousTerms {
+  using type = TypeList<>;
+};
+template <int D>
+struct ViscousTerms<D, PairViscosity::Morris> {
+  using type = TypeList<term::MorrisViscosity>;
+};
+template <int D>
+struct ViscousTerms<D, PairViscosity::ConsistentMorris> {  // no-slip NFM walls (kernels/ConsistentLaplacian.hpp)
+  using type = TypeList<term::ConsistentMorrisViscosity<D>>;
+};
+template <int D>
+struct ViscousTerms<D, PairViscosity::MonaghanGingold> {
+  using type = TypeList<term::MonaghanGingoldViscosity>;
+};
+
+// the term pack of row I of the table: base, viscous term, artificial viscosity, background pressure
+template <int D, std::size_t I>
+using RowTerms = decltype(concat(typename BaseTerms<D, flux_schemes[I].key.base>::type{},
+                                 typename ViscousTerms<D, flux_schemes[I].key.viscosity>::type{},
+                                 std::conditional_t<flux_schemes[I].key.artificial_viscosity, TypeList<term::ArtificialViscosity>, TypeList<>>{},
+                                 std::conditional_t<flux_schemes[I].key.background_pressure, TypeList<term::BackgroundPressure>, TypeList<>>{}));
 
 template <int D, class Kernel, class... T>
-void run_flux(const FluxArgs<D>& a) {
+void run_flux(const PassContext<D>& c) {
   using Pack = Terms<T...>;
-  FluxPass<D, Kernel, Pack> pass{a.list, a.box, Kernel(a.R), a.R * a.R, a.body, a.x, a.u, a.rho, a.P, a.m,
-                                 a.du, a.drho, Pack(make_term<D, T>(a)...), a.dm};
-  pass.run(a.first, a.first + a.n);
+  FluxPass<D, Kernel, Pack> pass{c.list, c.box, Kernel(c.R), c.R * c.R, c.body, c.x, c.u, c.rho, c.P, c.m,
+                                 c.du, c.drho, Pack(T::from(c)...), c.dm};
+  pass.run(c.first, c.end);
 }
 
 template <int D, class Kernel, class... T>
-FluxFunction<D> with_bg(const Scene& s, TypeList<T...>) {
-  if (s.background_pressure) return &run_flux<D, Kernel, T..., term::BackgroundPressure>;
+PassFunction<D> flux_of(TypeList<T...>) {
   return &run_flux<D, Kernel, T...>;
 }
-template <int D, class Kernel, class... T>
-FluxFunction<D> with_av(const Scene& s, TypeList<T...>) {
-  if (s.artificial_viscosity > 0) return with_bg<D, Kernel>(s, TypeList<T..., term::ArtificialViscosity>{});
-  return with_bg<D, Kernel>(s, TypeList<T...>{});
-}
-template <int D, class Kernel, class... T>
-FluxFunction<D> with_viscous(const Scene& s, TypeList<T...>) {
-  switch (s.viscous_term) {
-    case ViscousTerm::Morris:
-      // no-slip NFM walls: the second-order consistent operator (kernels/ConsistentLaplacian.hpp)
-      if (uses_consistent_laplacian(s)) return with_av<D, Kernel>(s, TypeList<T..., term::ConsistentMorrisViscosity<D>>{});
-      return with_av<D, Kernel>(s, TypeList<T..., term::MorrisViscosity>{});
-    case ViscousTerm::MonaghanGingold: return with_av<D, Kernel>(s, TypeList<T..., term::MonaghanGingoldViscosity>{});
-    case ViscousTerm::None: break;
-  }
-  return with_av<D, Kernel>(s, TypeList<T...>{});
+
+template <int D, class Kernel, std::size_t... I>
+PassFunction<D> flux_row(int row, std::index_sequence<I...>) {
+  static const PassFunction<D> rows[] = {flux_of<D, Kernel>(RowTerms<D, I>{})...};
+  return rows[row];
 }
 
 }  // namespace detail
 
-// The flux pass for this scene's scheme (kernel type fixed by the caller).
+// The flux pass of this scene's named scheme (kernel type fixed by the caller); a scheme not in
+// the table is refused, naming its keys (the case reader refuses it first, with the file's line).
 template <int D, class Kernel>
-FluxFunction<D> select_flux(const Scene& s) {
-  using Base = TypeList<term::PressureGradient, term::Continuity>;
-  // Riemann-SPH replaces the centred pressure gradient and continuity (and delta-SPH)
-  if (s.flux == FluxScheme::Riemann && s.riemann_variant == RiemannVariant::Vila) {
-    if (s.riemann_muscl) return detail::with_viscous<D, Kernel>(s, TypeList<term::RiemannVila<D, true>>{});
-    return detail::with_viscous<D, Kernel>(s, TypeList<term::RiemannVila<D, false>>{});
-  }
-  if (s.flux == FluxScheme::Riemann) {
-    if (s.riemann_muscl) return detail::with_viscous<D, Kernel>(s, TypeList<term::RiemannLeduc<D, true>>{});
-    return detail::with_viscous<D, Kernel>(s, TypeList<term::RiemannLeduc<D, false>>{});
-  }
-  if (s.delta_sph > 0)
-    return detail::with_viscous<D, Kernel>(s, TypeList<term::PressureGradient, term::Continuity, term::DeltaSphDiffusion<D>>{});
-  return detail::with_viscous<D, Kernel>(s, Base{});
+PassFunction<D> select_flux(const Scene& s) {
+  const FluxKey key = flux_key(s);
+  const int row = flux_scheme_index(key);
+  if (row < 0)
+    throw std::invalid_argument("scheme: no built flux scheme has the keys " + describe(key) +
+                                "; the built schemes (scene/FluxSchemes.hpp) are:\n" + list_flux_schemes());
+  return detail::flux_row<D, Kernel>(row, std::make_index_sequence<flux_schemes.size()>{});
 }
 
 }  // namespace ondine

@@ -1,7 +1,7 @@
-// Instantiates the flux passes of every scheme for D = 2, kernel WendlandC2.
+// Instantiates the flux passes of the named schemes for D = 2, kernel WendlandC2.
 #include "kernels/SmoothingKernels.hpp"
 #include "solver/FluxDispatch.hpp"
 
 namespace ondine {
-template FluxFunction<2> select_flux<2, WendlandC2<2>>(const Scene&);
+template PassFunction<2> select_flux<2, WendlandC2<2>>(const Scene&);
 }

@@ -1,7 +1,7 @@
-// Instantiates the flux passes of every scheme for D = 3, kernel QuarticSpline.
+// Instantiates the flux passes of the named schemes for D = 3, kernel QuarticSpline.
 #include "kernels/SmoothingKernels.hpp"
 #include "solver/FluxDispatch.hpp"
 
 namespace ondine {
-template FluxFunction<3> select_flux<3, QuarticSpline<3>>(const Scene&);
+template PassFunction<3> select_flux<3, QuarticSpline<3>>(const Scene&);
 }

@@ -1,10 +1,10 @@
 #pragma once
 // Declaration of the flux-pass selection (definitions: FluxDispatch.hpp,
 // instantiated once per dimension and kernel in FluxDispatch_*.cpp).
-#include "kernels/FluxArgs.hpp"
+#include "kernels/PassContext.hpp"
 #include "scene/Scene.hpp"
 
 namespace ondine {
 template <int D, class Kernel>
-FluxFunction<D> select_flux(const Scene& s);
+PassFunction<D> select_flux(const Scene& s);
 }

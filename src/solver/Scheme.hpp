@@ -3,15 +3,15 @@
 // terms, wall terms and wall options, refinement) become one compiled scheme, a set of
 // pass functions instantiated for the scene's kernel, chosen once when the simulation
 // starts (make_scheme, below: the only with_kernel call of the solver outside the
-// refinement's own kernels). Every pass takes one named context, PassContext, filled by
-// the part that calls it; it reads the members its kernel needs.
+// refinement's own kernels). Every pass takes the one named context, PassContext
+// (kernels/PassContext.hpp), filled by the part that calls it; it reads the members it needs.
 #include <cstdint>
 
 #include "kernels/CellList.hpp"
 #include "kernels/ConsistentLaplacian.hpp"
-#include "kernels/FluxArgs.hpp"
 #include "kernels/NeighbourList.hpp"
 #include "kernels/OpenBoundary.hpp"
+#include "kernels/PassContext.hpp"
 #include "kernels/WallFluxPass.hpp"
 #include "kernels/WallPressure.hpp"
 #include "kernels/WallSet.hpp"
@@ -21,50 +21,10 @@
 namespace ondine {
 
 template <int D>
-struct PassContext {
-  // the particles [first, end) of one level, its radius and spacing, its lists
-  int first = 0, end = 0;
-  double R = 0, dx = 0;
-  NeighbourList<D> list;
-  CellList<D> cells;       // the particle cell list (observers that start from a point)
-  CellList<D> wall_cells;  // the wall points binned at R
-  PeriodicBox<D> box;
-  PeriodicBox<D> wrap_box;  // the integrator's box, which wraps moved positions (shifting)
-  // the state
-  field_view_t<field::Position, D> x;
-  field_view_t<field::Velocity, D> u;
-  field_view_t<field::Density, D> rho;
-  field_view_t<field::Pressure, D> P;
-  field_view_t<field::Mass, D> m;
-  field_view_t<field::DensityGradient, D> grad_rho;
-  VelocityGradientRows<D> grad_u;  // Riemann-SPH with MUSCL: written by the density-gradient pass
-  field_view_t<field::ShepardGamma, D> gamma;
-  field_view_t<field::DensityRate, D> drho;
-  field_view_t<field::FreeSurface, D> free_surface;
-  field_view_t<field::TransportCorrection, D> du0;  // scheme.transport: ale, written by transport_velocity
-  double u_char = 0;                                  // U_char = Ma c0 of (2.113)
-  bool ale_project = true;                            // scheme.ale.cut_supports: tangential
-  // walls
-  WallPoints<D> wall;
-  WallFacets<D> facets;  // segments (2D) or triangles (3D)
-  FacetCells<D> facet_cells;  // the facets near each cell
-  LaplacianWeightView<D> weights;  // the consistent Laplacian's, next to no-slip walls
-  WallEos eos;
-  double nu = 0, rho0 = 0;
-  double morris_factor = 1;
-  bool velocity_muscl = false;
-  // refinement zones (observers read each SPH particle with its level's radius)
-  RefinementZones<D> zones;
-  field_view_t<field::AprBirthLevel, D> birth;
-  field_view_t<field::AprGuard, D> guard;
-  field_view_t<field::AprMother, D> mother;
-};
-
-template <int D>
 struct CompiledScheme {
-  using Pass = void (*)(const PassContext<D>&);
-  FluxFunction<D> flux = nullptr;           // the pair terms (FluxDispatch.hpp)
-  WallFluxFunction<D> wall_flux = nullptr;  // the wall terms (WallFluxDispatch.hpp), with walls
+  using Pass = PassFunction<D>;
+  Pass flux = nullptr;                      // the pair terms of the named scheme (FluxDispatch.hpp)
+  Pass wall_flux = nullptr;                 // the wall terms (WallFluxDispatch.hpp), with walls
   Pass density_gradient = nullptr;          // and the consistent Laplacian's weights next to no-slip walls
   Pass renormalised_continuity = nullptr;   // scheme.renormalised_continuity
   Pass free_surface = nullptr;              // (4.86)-(4.87) into ctx.free_surface

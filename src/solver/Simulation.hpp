@@ -16,7 +16,6 @@
 
 #include "kernels/CellList.hpp"
 #include "kernels/ConsistentLaplacian.hpp"
-#include "kernels/FluxArgs.hpp"
 #include "kernels/WallFluxPass.hpp"
 #include "solver/Scheme.hpp"
 #include "kernels/Integrator.hpp"
@@ -234,7 +233,8 @@ class Simulation {
   void update_walls(double t);
   bool consistent_laplacian() const;
   WallEos wall_eos() const;
-  FluxArgs<D> state_flux_args(int n);
+  // the consistent Laplacian's weights sized for n particles (grown with some slack)
+  void size_laplacian_weights(int n);
   double background_pressure_min(const field_view_t<field::Pressure, D>& P, int n) const;
   // the named context of a pass over a level's SPH particles (Scheme.hpp)
   PassContext<D> pass_context(const LevelSpan<D>& level) const;

@@ -41,33 +41,11 @@ WallEos Simulation<D>::wall_eos() const {
   return WallEos{scene_.rho0, scene_.c0, eos_gamma};
 }
 
-// What every flux pass reads, whatever the level: the box, body force, state views and
-// viscosity; with the consistent Laplacian, its weight array sized for n particles (grown
-// with some slack).
+// With the consistent Laplacian: its weight array sized for n particles (grown with some slack).
 template <int D>
-FluxArgs<D> Simulation<D>::state_flux_args(int n) {
-  FluxArgs<D> a;
-  a.box = domain_.box();
-  for (int k = 0; k < D; ++k) a.body[k] = scene_.gravity[k] + scene_.body_force[k];
-  a.x = p_.get(field::Position{});
-  a.u = p_.get(field::Velocity{});
-  a.rho = p_.get(field::Density{});
-  a.P = p_.get(field::Pressure{});
-  a.m = p_.get(field::Mass{});
-  a.du = p_.get(field::Acceleration{});
-  a.drho = p_.get(field::DensityRate{});
-  // the transport velocity enters the pair fluxes in Vila's ALE form only (Leduc's form moves
-  // the particles with it and nothing else, 2.101)
-  if (p_.has(field::TransportCorrection{}) && p_.has(field::MassRate{})) a.du0 = p_.get(field::TransportCorrection{});
-  if (p_.has(field::MassRate{})) a.dm = p_.get(field::MassRate{});
-  // the lattice factor scales the plain Morris term; the consistent one has its own weights
-  a.nu = scene_.viscous_term == ViscousTerm::Morris && !uses_consistent_laplacian(scene_) ? scene_.nu * scheme_.morris_factor : scene_.nu;
-  if (consistent_laplacian()) {
-    if (static_cast<int>(laplacian_weights_.extent(0)) < n)
-      laplacian_weights_ = LaplacianWeightView<D>("ondine::NFM::laplacian_weights", n + n / 8 + 16);
-    a.laplacian_weights = laplacian_weights_;
-  }
-  return a;
+void Simulation<D>::size_laplacian_weights(int n) {
+  if (consistent_laplacian() && static_cast<int>(laplacian_weights_.extent(0)) < n)
+    laplacian_weights_ = LaplacianWeightView<D>("ondine::NFM::laplacian_weights", n + n / 8 + 16);
 }
 
 // (2.105): P_min = max(0, -min_k P_k) over the owned particles of every rank
@@ -105,9 +83,18 @@ PassContext<D> Simulation<D>::pass_context(const LevelSpan<D>& L) const {
   take(c.grad_u.g1, field::VelocityGradientY{});
   take(c.grad_u.g2, field::VelocityGradientZ{});
   take(c.gamma, field::ShepardGamma{});
+  take(c.du, field::Acceleration{});
   take(c.drho, field::DensityRate{});
+  take(c.dm, field::MassRate{});
   take(c.free_surface, field::FreeSurface{});
   take(c.du0, field::TransportCorrection{});
+  for (int k = 0; k < D; ++k) c.body[k] = scene_.gravity[k] + scene_.body_force[k];
+  // the pair terms' coefficients at the level's radius; the lattice factor scales the plain
+  // Morris term, the consistent one has its own weights
+  c.nu_pair = scene_.viscous_term == ViscousTerm::Morris && !uses_consistent_laplacian(scene_) ? scene_.nu * scheme_.morris_factor : scene_.nu;
+  c.delta_coeff = scene_.delta_sph * scene_.c0 * L.R;
+  c.av_alpha_R_c0 = scene_.artificial_viscosity * L.R * scene_.c0;
+  c.riemann_eta = scene_.riemann_low_dissipation ? 3.0 : 0.0;  // eta of Zhang et al. (2017)
   c.u_char = scene_.ale_mach * scene_.c0;
   c.ale_project = scene_.ale_tangential_cut;
   c.wall = L.wall;
@@ -118,6 +105,7 @@ PassContext<D> Simulation<D>::pass_context(const LevelSpan<D>& L) const {
   c.nu = scene_.nu;
   c.rho0 = scene_.rho0;
   c.morris_factor = scheme_.morris_factor;
+  c.clearance = 0.5 * L.dx;
   c.velocity_muscl = scene_.wall_velocity_reconstruction;
   if (apr_on_) {
     c.zones = apr_.zones();
@@ -141,22 +129,16 @@ void Simulation<D>::evaluate(const bool later_stage) {
     // several ranks: the guards' halo copies (their density gradient travels after the gradient pass)
     domain_.refresh(p_, field::Velocity{}, field::Density{});
   }
-  FluxArgs<D> a = state_flux_args(n);
-  with_eos<D>(scene_, [&](auto eos) { update_pressure<D>(eos, a.rho, a.P, n_all); });
-  if (scene_.background_pressure) a.P_min = background_pressure_min(a.P, n);
+  size_laplacian_weights(n);
+  const auto rho = p_.get(field::Density{}), P = p_.get(field::Pressure{});
+  with_eos<D>(scene_, [&](auto eos) { update_pressure<D>(eos, rho, P, n_all); });
+  const double P_min = scene_.background_pressure ? background_pressure_min(P, n) : 0.0;
+  const auto x = p_.get(field::Position{});
   const auto gamma = walls ? p_.get(field::ShepardGamma{}) : field_view_t<field::ShepardGamma, D>();
   // the density gradient feeds delta-SPH, the MUSCL wall state (4.30) and Riemann-SPH's MUSCL
   // (2.78, with the velocity gradient); next to no-slip walls its pass also solves the
   // consistent Laplacian's weights
   const bool gradient = uses_density_gradient(scene_), velocity_gradient = uses_velocity_gradient(scene_);
-  if (gradient) a.grad_rho = p_.get(field::DensityGradient{});
-  if (velocity_gradient) {
-    a.grad_u.g0 = p_.get(field::VelocityGradientX{});
-    a.grad_u.g1 = p_.get(field::VelocityGradientY{});
-    if constexpr (D == 3) a.grad_u.g2 = p_.get(field::VelocityGradientZ{});
-  }
-  a.eos = wall_eos();
-  a.riemann_eta = scene_.riemann_low_dissipation ? 3.0 : 0.0;  // eta of Zhang et al. (2017)
   // scheme.density_gradient: step holds the first stage's gradient through the step (the owned
   // particles carry it through a migration; the halos are refreshed below all the same)
   const bool gradient_pass = gradient && !(later_stage && scene_.density_gradient_once_per_step);
@@ -165,7 +147,7 @@ void Simulation<D>::evaluate(const bool later_stage) {
     if (L.active_end == L.first) continue;
     const auto range = Kokkos::RangePolicy<ExecSpace>(L.first, L.active_end);
     if (walls)
-      Kokkos::parallel_for("ondine::NFM::shepard_gamma", range, ShepardGammaPass<D>{walls_.facets(), walls_.facet_cells(), L.R, domain_.box(), a.x, gamma});
+      Kokkos::parallel_for("ondine::NFM::shepard_gamma", range, ShepardGammaPass<D>{walls_.facets(), walls_.facet_cells(), L.R, domain_.box(), x, gamma});
     if (gradient_pass) scheme_.density_gradient(pass_context(L));
   }
   // scheme.transport: ale: the transport velocity's correction (2.113) at this stage, with the
@@ -188,21 +170,14 @@ void Simulation<D>::evaluate(const bool later_stage) {
     domain_.refresh(p_, field::VelocityGradientX{}, field::VelocityGradientY{});
     if constexpr (D == 3) domain_.refresh(p_, field::VelocityGradientZ{});
   }
-  const WallEos weos = wall_eos();
   for (const LevelSpan<D>& L : levels) {
     if (L.active_end == L.first) continue;
-    a.first = L.first;
-    a.n = L.active_end - L.first;
-    a.list = L.list;
-    a.R = L.R;
-    a.delta_coeff = scene_.delta_sph * scene_.c0 * L.R;
-    a.av_alpha_R_c0 = scene_.artificial_viscosity * L.R * scene_.c0;
-    scheme_.flux(a);
-    if (walls)
-      scheme_.wall_flux(WallFluxArgs<D>{a, L.wall, L.wall_cells, gamma, laplacian_weights_, weos, scene_.nu, 0.5 * L.dx,
-                                 scene_.wall_velocity_reconstruction});
+    PassContext<D> c = pass_context(L);
+    c.P_min = P_min;
+    scheme_.flux(c);
+    if (walls) scheme_.wall_flux(c);
     // replaces the plain divergence of (4.23)/(4.25) by the renormalised one (kernels/RenormalisedContinuity.hpp)
-    if (scene_.renormalised_continuity) scheme_.renormalised_continuity(pass_context(L));
+    if (scene_.renormalised_continuity) scheme_.renormalised_continuity(c);
   }
   if (open_.on()) open_.zero_rates(p_, n);  // the buffer particles are not integrated
 }

@@ -1,4 +1,4 @@
-#include "run/RunOutput.hpp"
+#include "io/CsvSeries.hpp"
 
 #include <cstdlib>
 #include <fstream>

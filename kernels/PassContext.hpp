@@ -1,0 +1,70 @@
+#pragma once
+// The one named context of every pass over a level's particles: the pair loop and its terms,
+// the wall loop and its terms, the gradient, surface, transport, shifting and observer passes.
+// Filled by the solver (Simulation::pass_context); each pass and each term takes what it
+// needs from it (a term's `from`, e.g. kernels/terms/MorrisViscosity.hpp).
+#include "kernels/CellList.hpp"
+#include "kernels/ConsistentLaplacian.hpp"
+#include "kernels/NeighbourList.hpp"
+#include "kernels/VelocityGradientSum.hpp"
+#include "kernels/WallPressure.hpp"
+#include "kernels/WallSet.hpp"
+#include "kernels/apr/RefinementZones.hpp"
+
+namespace ondine {
+
+template <int D>
+struct PassContext {
+  // the particles [first, end) of one level, its radius and spacing, its lists
+  int first = 0, end = 0;
+  double R = 0, dx = 0;
+  NeighbourList<D> list;
+  CellList<D> cells;       // the particle cell list (observers that start from a point)
+  CellList<D> wall_cells;  // the wall points binned at R
+  PeriodicBox<D> box;
+  PeriodicBox<D> wrap_box;  // the integrator's box, which wraps moved positions (shifting)
+  Vec<D> body;              // gravity + body force
+  // the state and its rates
+  field_view_t<field::Position, D> x;
+  field_view_t<field::Velocity, D> u;
+  field_view_t<field::Density, D> rho;
+  field_view_t<field::Pressure, D> P;
+  field_view_t<field::Mass, D> m;
+  field_view_t<field::DensityGradient, D> grad_rho;
+  VelocityGradientRows<D> grad_u;  // Riemann-SPH with MUSCL: written by the density-gradient pass
+  field_view_t<field::ShepardGamma, D> gamma;
+  field_view_t<field::Acceleration, D> du;
+  field_view_t<field::DensityRate, D> drho;
+  field_view_t<field::MassRate, D> dm;  // Vila's ALE form: dm/dt, written by the flux pass
+  field_view_t<field::FreeSurface, D> free_surface;
+  field_view_t<field::TransportCorrection, D> du0;  // scheme.transport: ale, written by transport_velocity
+  double u_char = 0;                                  // U_char = Ma c0 of (2.113)
+  bool ale_project = true;                            // scheme.ale.cut_supports: tangential
+  // the pair terms' coefficients at this level's radius
+  double nu_pair = 0;        // the fluid viscous term's nu (Morris: times the lattice factor)
+  double delta_coeff = 0;    // delta c0 R (2.60)
+  double av_alpha_R_c0 = 0;  // alpha R c0 (2.58)
+  double P_min = 0;          // background pressure (2.105)
+  double riemann_eta = 0;    // Riemann-SPH: > 0 the low-dissipation pressure (kernels/terms/RiemannLeduc.hpp)
+  // walls
+  WallPoints<D> wall;
+  WallFacets<D> facets;       // segments (2D) or triangles (3D)
+  FacetCells<D> facet_cells;  // the facets near each cell
+  LaplacianWeightView<D> weights;  // the consistent Laplacian's, next to no-slip walls
+  WallEos eos{1, 1, 1};            // c(rho) of (1.9): the wall pressure (4.14) and Riemann-SPH
+  double nu = 0, rho0 = 0;         // the scene's viscosity (the wall terms have their own quadrature)
+  double morris_factor = 1;
+  double clearance = 0;            // dx / 2 of the level: the wall-ward correction acts closer than this
+  bool velocity_muscl = false;     // scheme.wall_velocity_reconstruction: the MUSCL state of u (4.30)
+  // refinement zones (observers read each SPH particle with its level's radius)
+  RefinementZones<D> zones;
+  field_view_t<field::AprBirthLevel, D> birth;
+  field_view_t<field::AprGuard, D> guard;
+  field_view_t<field::AprMother, D> mother;
+};
+
+// a pass over the particles [c.first, c.end) of one level
+template <int D>
+using PassFunction = void (*)(const PassContext<D>&);
+
+}  // namespace ondine
