@@ -15,7 +15,7 @@ namespace ondine {
 template <int D>
 struct OutputInstant {
   OutputInstant(Simulation<D>& s, double dt) : sim(s), last_dt(dt) {}
-  Simulation<D>& sim;  // read only (its observer calls refresh halos and lists, never the state)
+  Simulation<D>& sim;  // read only: its measurements may refresh halos and lists, never the state
   double last_dt = 0;  // the last step
   std::map<std::string, double> posted;  // figures of this instant from earlier observers ("P1", "body.fx")
   // the integral quantities, computed once, when first asked for
