@@ -9,7 +9,7 @@ namespace ondine::term {
 struct ArtificialViscosity {
   static constexpr const char* name = "artificial_viscosity";
   template <int D>
-  static ArtificialViscosity from(const PassContext<D>& c) { return {c.av_alpha_R_c0, 0.01 * c.R * c.R}; }
+  static ArtificialViscosity from(const PassContext<D>& c) { return ArtificialViscosity{c.av_alpha_R_c0, 0.01 * c.R * c.R}; }
   double alpha_R_c0;  // alpha * R * c0
   double eps_R2;      // 0.01 R^2
   template <int D>

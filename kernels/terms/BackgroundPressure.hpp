@@ -7,7 +7,7 @@ namespace ondine::term {
 struct BackgroundPressure {
   static constexpr const char* name = "background_pressure";
   template <int D>
-  static BackgroundPressure from(const PassContext<D>& c) { return {c.P_min}; }
+  static BackgroundPressure from(const PassContext<D>& c) { return BackgroundPressure{c.P_min}; }
   double P_min;
   template <int D>
   KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {

@@ -11,7 +11,7 @@ namespace ondine::term {
 template <int D>
 struct ConsistentMorrisViscosity {
   static constexpr const char* name = "consistent_morris_viscosity";
-  static ConsistentMorrisViscosity from(const PassContext<D>& c) { return {c.nu_pair, c.weights}; }
+  static ConsistentMorrisViscosity from(const PassContext<D>& c) { return ConsistentMorrisViscosity{c.nu_pair, c.weights}; }
   double nu;
   LaplacianWeightView<D> weights;
   KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {

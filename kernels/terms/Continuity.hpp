@@ -6,7 +6,7 @@ namespace ondine::term {
 struct Continuity {
   static constexpr const char* name = "continuity";
   template <int D>
-  static Continuity from(const PassContext<D>&) { return {}; }
+  static Continuity from(const PassContext<D>&) { return Continuity{}; }
   template <int D>
   KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {
     s.drho -= q.rho_i * q.omega_j * dot(q.u_j - q.u_i, q.gradW);

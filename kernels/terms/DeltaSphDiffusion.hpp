@@ -11,7 +11,7 @@ namespace ondine::term {
 template <int D>
 struct DeltaSphDiffusion {
   static constexpr const char* name = "delta_sph";
-  static DeltaSphDiffusion from(const PassContext<D>& c) { return {c.delta_coeff, c.grad_rho}; }
+  static DeltaSphDiffusion from(const PassContext<D>& c) { return DeltaSphDiffusion{c.delta_coeff, c.grad_rho}; }
   double coeff;  // delta c0 R
   field_view_t<field::DensityGradient, D> grad_rho;
   KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {

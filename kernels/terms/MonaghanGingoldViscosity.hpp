@@ -7,7 +7,7 @@ namespace ondine::term {
 struct MonaghanGingoldViscosity {
   static constexpr const char* name = "monaghan_gingold_viscosity";
   template <int D>
-  static MonaghanGingoldViscosity from(const PassContext<D>& c) { return {c.nu_pair}; }
+  static MonaghanGingoldViscosity from(const PassContext<D>& c) { return MonaghanGingoldViscosity{c.nu_pair}; }
   double nu;
   template <int D>
   KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {

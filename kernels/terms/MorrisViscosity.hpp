@@ -8,7 +8,7 @@ namespace ondine::term {
 struct MorrisViscosity {
   static constexpr const char* name = "morris_viscosity";
   template <int D>
-  static MorrisViscosity from(const PassContext<D>& c) { return {c.nu_pair}; }
+  static MorrisViscosity from(const PassContext<D>& c) { return MorrisViscosity{c.nu_pair}; }
   double nu;
   template <int D>
   KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {

@@ -6,7 +6,7 @@ namespace ondine::term {
 struct PressureGradient {
   static constexpr const char* name = "pressure_gradient";
   template <int D>
-  static PressureGradient from(const PassContext<D>&) { return {}; }
+  static PressureGradient from(const PassContext<D>&) { return PressureGradient{}; }
   template <int D>
   KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {
     s.du += (-q.omega_j * (q.P_i + q.P_j) * q.inv_rho_i) * q.gradW;

@@ -64,8 +64,8 @@ template <int D, bool Muscl>
 struct RiemannLeduc {
   static constexpr const char* name = Muscl ? "riemann_leduc_muscl" : "riemann_leduc";
   static RiemannLeduc from(const PassContext<D>& c) {
-    if constexpr (Muscl) return {c.eos, c.riemann_eta, c.grad_rho, c.grad_u};
-    else return {c.eos, c.riemann_eta, {}, {}};
+    if constexpr (Muscl) return RiemannLeduc{c.eos, c.riemann_eta, c.grad_rho, c.grad_u};
+    else return RiemannLeduc{c.eos, c.riemann_eta, {}, {}};
   }
   WallEos eos;  // c(rho) of (1.9); P(rho^) = P_i + c_i^2 (rho^ - rho_i), exact for the linear law
   double eta = 0;  // > 0: the low-dissipation pressure of Zhang et al. (low_dissipation_riemann)

@@ -24,7 +24,7 @@ template <int D, bool Muscl>
 struct RiemannVila {
   static constexpr const char* name = Muscl ? "riemann_vila_muscl" : "riemann_vila";
   // u0 = u + du0 enters the fluxes with the transport velocity (scheme.transport: ale)
-  static RiemannVila from(const PassContext<D>& c) { return {RiemannLeduc<D, Muscl>::from(c), c.m, c.du0}; }
+  static RiemannVila from(const PassContext<D>& c) { return RiemannVila{RiemannLeduc<D, Muscl>::from(c), c.m, c.du0}; }
   RiemannLeduc<D, Muscl> riemann;                     // the midpoint states and the solver
   field_view_t<field::Mass, D> m;                     // m_i: w_i = m_i / rho_i
   field_view_t<field::TransportCorrection, D> du0;    // u0 = u + du0 when allocated (scheme.transport: ale)

@@ -12,7 +12,7 @@ namespace ondine::wall {
 struct Continuity {
   static constexpr const char* name = "wall_continuity";
   template <int D>
-  static Continuity from(const PassContext<D>&) { return {}; }
+  static Continuity from(const PassContext<D>&) { return Continuity{}; }
   template <int D>
   KOKKOS_INLINE_FUNCTION void point(const WallParticle<D>& p, const WallPoint<D>& w, WallSum<D>& s) const {
     s.drho -= p.rho_i * dot(w.uq - p.ui, w.n) * w.Wq;

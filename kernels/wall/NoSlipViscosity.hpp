@@ -14,7 +14,7 @@ namespace ondine::wall {
 template <int D, bool Consistent>
 struct NoSlipViscosity {
   static constexpr const char* name = Consistent ? "wall_no_slip_consistent" : "wall_no_slip";
-  static NoSlipViscosity from(const PassContext<D>& c) { return {c.nu, 0.05 * c.R, c.wall.no_slip, c.weights}; }
+  static NoSlipViscosity from(const PassContext<D>& c) { return NoSlipViscosity{c.nu, 0.05 * c.R, c.wall.no_slip, c.weights}; }
   double nu;
   double min_dn;                        // 0.05 R
   Kokkos::View<int*, MemSpace> no_slip;  // per wall point: 1 no-slip, 0 slip

@@ -13,7 +13,7 @@ namespace ondine::wall {
 struct PressureFlux {
   static constexpr const char* name = "wall_pressure";
   template <int D>
-  static PressureFlux from(const PassContext<D>& c) { return {c.P_min}; }
+  static PressureFlux from(const PassContext<D>& c) { return PressureFlux{c.P_min}; }
   double P_min;
   template <int D>
   KOKKOS_INLINE_FUNCTION void point(const WallParticle<D>& p, const WallPoint<D>& w, WallSum<D>& s) const {
