@@ -14,6 +14,7 @@
 #include "reference/ForceCoefficients.hpp"
 #include "scene/CaseError.hpp"
 #include "scene/CaseFile.hpp"
+#include "solver/hooks/OpenBoundaryStep.hpp"
 #include "test_helpers.hpp"
 
 using namespace ondine;
@@ -79,7 +80,7 @@ void run_until(Simulation<D>& sim, double t) {
 template <int D>
 void check_mass_balance(const Simulation<D>& sim) {
   const Diagnostics d = sim.diagnostics();
-  const OpenBoundaries<D>& ob = sim.open_boundaries();
+  const OpenBoundaries<D>& ob = sim.template find_hook<OpenBoundaryStep<D>>()->boundaries();
   const OpenFlux t = ob.total();
   const double created = t.created, removed = t.removed, in = t.mass_in, out = t.mass_out;
   INFO("created " << created << " removed " << removed << " in " << in << " out " << out);

@@ -7,6 +7,7 @@
 #include "kernels/Math.hpp"
 #include "observers/ChannelReference.hpp"
 #include "observers/ErrorNorms.hpp"
+#include "solver/hooks/ImpermeabilityGuard.hpp"
 #include "reference/References.hpp"
 
 namespace ondine {
@@ -100,7 +101,7 @@ void walls(const Simulation<D>& sim, std::map<std::string, double>& e) {
     e["wall_crossings"] = static_cast<double>(sim.wall_leaks(0.0));  // on the solid side of a wall only
     if (apr_on) e["families_moved_off_walls"] = static_cast<double>(sim.refinement().families_moved());
     if (apr_on && scene.refinement_guard_shifting) e["guard_shifts"] = static_cast<double>(comm.sum(sim.refinement().guard_shifts()));
-    e["wall_corrections"] = static_cast<double>(sim.wall_corrections());
+    if (const auto* guard = sim.template find_hook<ImpermeabilityGuard<D>>()) e["wall_corrections"] = static_cast<double>(guard->corrections(comm));
   }
 }
 

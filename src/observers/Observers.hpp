@@ -24,7 +24,7 @@ std::vector<std::unique_ptr<Observer<D>>> make_observers(const Scene& s, const s
   if (sim.has_walls()) list.push_back(std::make_unique<WallForceSeries<D>>(out, writer, sim));
   if (ref == ReferenceKind::MartinMoyce) list.push_back(std::make_unique<SurgeFront<D>>(s, out, writer));
   list.push_back(std::make_unique<DiagnosticsSeries<D>>(s, out, writer));
-  if (sim.open_on()) list.push_back(std::make_unique<OpenMassBalance<D>>(out, writer, sim));
+  if (sim.template find_hook<OpenBoundaryStep<D>>()) list.push_back(std::make_unique<OpenMassBalance<D>>(out, writer, sim));
   if (!s.probes.empty()) list.push_back(std::make_unique<ProbeSeries<D>>(s, out, writer));
   if (!s.wave_gauges.empty()) list.push_back(std::make_unique<WaveGaugeSeries<D>>(s, out, writer));
   if (ref == ReferenceKind::Cylinder) list.push_back(std::make_unique<ForceCoefficientObserver<D>>(s));

@@ -17,6 +17,7 @@
 #include "run/RunRecorder.hpp"
 #include "run/RunRestart.hpp"
 #include "solver/Simulation.hpp"
+#include "solver/hooks/OpenBoundaryStep.hpp"
 
 namespace ondine {
 
@@ -62,8 +63,7 @@ class Checkpointer {
     h.initial_mass = d0.mass;
     for (int k = 0; k < 3; ++k) h.initial_momentum[k] = d0.momentum[k];
     h.checksum = sim.state_checksum();
-    h.wall_corrections = sim.wall_corrections();
-    if (sim.open_on()) h.open = sim.open_state();
+    sim.save_hooks(h);  // the impermeability guard's count, the open boundaries' state
     if (sim.refinement_on()) {
       h.refinement = sim.refinement_state();
       h.refinement.zones = refinement_zone_text(scene_);
@@ -184,9 +184,9 @@ nlohmann::json run_summary(const Scene& scene, const RunOptions& opt, const Simu
                        {"refined", apr.refined()},
                        {"deleted", apr.deleted()}};
   }
-  if (sim.open_on()) {
+  if (const auto* open = sim.template find_hook<OpenBoundaryStep<D>>()) {
     // open boundaries: what crossed each plane (kg since t = 0) and the particles created and removed
-    const OpenBoundaries<D>& ob = sim.open_boundaries();
+    const OpenBoundaries<D>& ob = open->boundaries();
     nlohmann::json list = nlohmann::json::array();
     for (const OpenFlux& f : ob.fluxes())
       list.push_back({{"name", f.name}, {"mass_in", f.mass_in}, {"mass_out", f.mass_out}, {"mass_created", f.created}, {"mass_removed", f.removed}});

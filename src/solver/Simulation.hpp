@@ -10,6 +10,7 @@
 // public call is collective and returns global figures.
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -31,7 +32,7 @@
 #include "scene/Scene.hpp"
 #include "solver/AdaptiveRefinement.hpp"
 #include "solver/Domain.hpp"
-#include "solver/OpenBoundaries.hpp"
+#include "solver/hooks/StepHook.hpp"
 #include "solver/WallModel.hpp"
 
 namespace ondine {
@@ -155,20 +156,31 @@ class Simulation {
   bool has_walls() const { return !walls_.empty(); }
   const WallModel<D>& walls() const { return walls_; }
   std::vector<WallForce> wall_forces();
-  // impermeability corrections since t = 0 (kernels/WallImpermeability.hpp), all ranks; carried by checkpoints
-  std::int64_t wall_corrections() const { return comm().sum(wall_corrections_); }
   // particles on the solid side of a wall or closer than `clearance` (default 0.1 dx) to one
   std::int64_t wall_leaks(double clearance = -1) const;
   // free-surface flag (4.86-4.87) into field::FreeSurface, at output times
   void update_free_surface();
 
-  // open boundaries (kernels/OpenBoundary.hpp): their mass counters since t = 0, all ranks
-  bool open_on() const { return open_.on(); }
-  const OpenBoundaries<D>& open_boundaries() const { return open_; }
-  CheckpointOpen open_state() const { return open_.save(); }
+  // the step hooks (hooks/StepHooks.hpp): the one of type H, or null where the scene has none
+  template <class H>
+  const H* find_hook() const {
+    for (const auto& h : hooks_)
+      if (const H* f = dynamic_cast<const H*>(h.get())) return f;
+    return nullptr;
+  }
+  // a hook beyond the scene's (a test's, a coupling's), run after them; added after the set-up,
+  // so only its allocate point runs now (not start nor started)
+  void add_hook(std::unique_ptr<StepHook<D>> h) {
+    h->allocate(p_);
+    hooks_.push_back(std::move(h));
+  }
+  // what the hooks carry in a checkpoint's header (collective)
+  void save_hooks(CheckpointHeader& h) const {
+    for (const auto& k : hooks_) k->save(comm(), h);
+  }
   // the global id the next new particle gets (with refinement zones the APR's counter, which
-  // the open boundaries share)
-  std::int64_t next_id() const { return apr_on_ ? apr_.next_id() : open_.next_id(); }
+  // a hook that creates particles shares); 0 where nothing creates particles
+  std::int64_t next_id() const;
 
   // adaptive particle refinement (only with refinement zones; docs/apr.md)
   bool refinement_on() const { return apr_on_; }
@@ -183,6 +195,8 @@ class Simulation {
  private:
   template <int>
   friend class OutputFrame;
+  template <int>
+  friend class StepState;
   // before a snapshot: pressure from the EOS, Shepard factor and walls at time t, free surface;
   // with refinement zones, every guard interpolated from the stored state (5.24)
   void prepare_output();
@@ -205,7 +219,7 @@ class Simulation {
     f(field::Density{});
     f(field::Mass{});
     f(field::GlobalId{});
-    if (open_.on()) f(field::OpenRole{});
+    if (p_.has(field::OpenRole{})) f(field::OpenRole{});  // allocated by the open boundaries
     if (!apr_on_) return;
     f(field::AprBirthLevel{});
     f(field::AprLevel{});
@@ -224,11 +238,6 @@ class Simulation {
   void refinement_bookkeeping();
   void refresh_guard_halos();       // several ranks: the interpolated fields of the guards' halo copies
   void build_level_walls();
-  // open boundaries at a step start (solver/SimulationOpen.hpp): roles, particles created and
-  // removed (before the refinement's bookkeeping, which then sorts them), then the buffer
-  // particles' state
-  void open_classify();
-  void open_buffer_state();
   // evaluation (solver/SimulationEvaluate.hpp)
   void update_walls(double t);
   bool consistent_laplacian() const;
@@ -243,7 +252,6 @@ class Simulation {
   void stage_update(double c_dt, double acc_weight, bool first);
   RungeKuttaViews<D> stage_views() const;
   void allocate_stage_storage();
-  void shift_particles();
   void check_state(double dt);
 
   const Scene scene_;  // as parsed: what the solver derives lives in its own members
@@ -256,16 +264,10 @@ class Simulation {
   CompiledScheme<D> scheme_;  // every kernel-dependent pass, chosen once (Scheme.hpp)
   WallModel<D> walls_;
   LaplacianWeightView<D> laplacian_weights_;  // scratch of evaluate() (kernels/ConsistentLaplacian.hpp)
-  // scratch of shift_particles(): the shifted state, copied back at once (the stage storage
-  // must keep the step's start for the impermeability guard and the blow-up restore)
-  field_view_t<field::Position, D> shifted_x_;
-  field_view_t<field::Velocity, D> shifted_u_;
-  field_view_t<field::Density, D> shifted_rho_;
   FluidRegion<D> region_;
   double stage_time_ = 0;
   double t_ = 0;
   std::int64_t steps_ = 0;
-  std::int64_t wall_corrections_ = 0;  // this rank's impermeability corrections (kernels/WallImpermeability.hpp)
   Diagnostics initial_;
   // APR: the next step start runs the bookkeeping even if the lists are valid (after a
   // checkpoint, a restart, or a list rebuild at an output)
@@ -277,7 +279,7 @@ class Simulation {
   field_view_t<field::DensityGradient, D> saved_grad_rho_;
   AdaptiveRefinement<D> apr_;
   bool apr_on_ = false;
-  OpenBoundaries<D> open_;
+  std::vector<std::unique_ptr<StepHook<D>>> hooks_;  // in the order their points run
   Kokkos::View<double* [D], Kokkos::LayoutRight, MemSpace> guard_shift_;  // per particle: GuardSpacing's shift
   // APR with walls: the walls of each level l >= 1, their quadrature at the level's spacing
   // (3D; in 2D at the finest level's, as level 0's) and their points binned at R_l

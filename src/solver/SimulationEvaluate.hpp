@@ -12,7 +12,7 @@
 #include "kernels/EquationOfState.hpp"
 #include "kernels/apr/LevelSums.hpp"
 #include "solver/KernelDispatch.hpp"
-#include "solver/Simulation.hpp"
+#include "solver/StepState.hpp"
 
 namespace ondine {
 
@@ -150,20 +150,9 @@ void Simulation<D>::evaluate(const bool later_stage) {
       Kokkos::parallel_for("ondine::NFM::shepard_gamma", range, ShepardGammaPass<D>{walls_.facets(), walls_.facet_cells(), L.R, domain_.box(), x, gamma});
     if (gradient_pass) scheme_.density_gradient(pass_context(L));
   }
-  // scheme.transport: ale: the transport velocity's correction (2.113) at this stage, with the
-  // free-surface flags (4.86)-(4.87) of the step's first stage
-  if (scheme_.transport_velocity) {
-    if (p_.has(field::FreeSurface{})) {
-      if (!later_stage)
-        for (const LevelSpan<D>& L : levels)
-          if (L.active_end > L.first) scheme_.free_surface(pass_context(L));
-      // at every stage: a list rebuilt since may have made new halo copies
-      domain_.refresh(p_, field::FreeSurface{});
-    }
-    for (const LevelSpan<D>& L : levels)
-      if (L.active_end > L.first) scheme_.transport_velocity(pass_context(L));
-    domain_.refresh(p_, field::TransportCorrection{});
-  }
+  // the hooks' point before the flux (scheme.transport: ale: the transport velocity, 2.113)
+  StepState<D> state(*this);
+  for (auto& h : hooks_) h->before_flux(state, later_stage);
   // with zones the guards' density gradient came with their interpolation (GuardInterpolation.hpp)
   if (gradient) domain_.refresh(p_, field::DensityGradient{});
   if (velocity_gradient) {
@@ -179,7 +168,7 @@ void Simulation<D>::evaluate(const bool later_stage) {
     // replaces the plain divergence of (4.23)/(4.25) by the renormalised one (kernels/RenormalisedContinuity.hpp)
     if (scene_.renormalised_continuity) scheme_.renormalised_continuity(c);
   }
-  if (open_.on()) open_.zero_rates(p_, n);  // the buffer particles are not integrated
+  for (auto& h : hooks_) h->after_evaluation(state);
 }
 
 }  // namespace ondine

@@ -6,4 +6,3 @@
 #include "solver/SimulationEvaluate.hpp"
 #include "solver/SimulationStep.hpp"
 #include "solver/SimulationObservers.hpp"
-#include "solver/SimulationOpen.hpp"

@@ -65,8 +65,9 @@ Diagnostics Simulation<D>::diagnostics() const {
   // particle is never refined); a buffer particle beyond the outer face is removed at the next
   // step start
   d.fluid_mass = d.mass;
-  const auto role = open_.on() ? p_.get(field::OpenRole{}) : field_view_t<field::OpenRole, D>();
-  if (open_.on()) {
+  const bool open = p_.has(field::OpenRole{});
+  const auto role = open ? p_.get(field::OpenRole{}) : field_view_t<field::OpenRole, D>();
+  if (open) {
     double buffers = 0;
     Kokkos::parallel_reduce("ondine::Diagnostics::buffer_mass", Kokkos::RangePolicy<ExecSpace>(0, n),
                             KOKKOS_LAMBDA(const int i, double& s) { s += role(i) != 0 ? m(i) : 0.0; }, buffers);

@@ -10,7 +10,8 @@
 #include "scene/CaseFile.hpp"
 #include "solver/KernelDispatch.hpp"
 #include "solver/SchemePasses.hpp"
-#include "solver/Simulation.hpp"
+#include "solver/StepState.hpp"
+#include "solver/hooks/StepHooks.hpp"
 
 namespace ondine {
 
@@ -54,7 +55,6 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
     if constexpr (D == 3) p_.allocate(field::VelocityGradientZ{});
   }
   if (walls) p_.allocate(field::ShepardGamma{});
-  if (scene.ale) p_.allocate(field::TransportCorrection{});
   if (scene.flux == FluxScheme::Riemann && scene.riemann_variant == RiemannVariant::Vila) p_.allocate(field::MassRate{});
   bool free_surface_possible = false;
   for (int k = 0; k < D; ++k) free_surface_possible = free_surface_possible || !scene.periodic[k];
@@ -64,13 +64,8 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
     if (apr_on_) build_level_walls();
     build_fluid_region();
   }
-  if (!scene_.open_boundaries.empty()) {
-    if (restart && !restart->header.open.present)
-      throw std::runtime_error("the checkpoint was written by a run without open boundaries; the case has open_boundaries");
-    open_ = OpenBoundaries<D>(scene_);
-  } else if (restart && restart->header.open.present) {
-    throw std::runtime_error("the checkpoint was written by a run with open boundaries; the case has none");
-  }
+  hooks_ = make_step_hooks<D>(scene_, restart);
+  for (auto& h : hooks_) h->allocate(p_);
   if (restart) {
     load_checkpoint(*restart);
   } else {
@@ -84,12 +79,9 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
     decompose(false);
     n_own_ = domain_.migrate(p_, n_own_);
   }
-  // open boundaries: the roles, and the particles beyond the buffers dropped, before the
-  // refinement sorts the particles
-  if (open_.on()) {
-    if (restart) open_.restore(restart->header.open);
-    else n_own_ = open_.start(p_, n_own_, comm().sum(static_cast<std::int64_t>(n_own_)));
-  }
+  // the hooks' set-up (the open boundaries' roles, before the refinement sorts the particles)
+  StepState<D> state(*this);
+  for (auto& h : hooks_) h->start(state, restart);
   if (apr_on_ && restart) {
     // the APR fields came with the checkpoint (load_checkpoint); the zones, counters and
     // level ranges as saved (on several ranks after the first migration: each rank sorts
@@ -106,21 +98,27 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
     // after the first decomposition: each rank refines the particles it owns)
     apr_ = AdaptiveRefinement<D>(scene_, domain_.box(), skin_len_);
     // ids from the fill's count on (the open boundaries may have dropped particles since)
-    apr_.initialise(p_, open_.on() ? open_.next_id() : comm().sum(static_cast<std::int64_t>(n_own_)));
+    std::int64_t ids = comm().sum(static_cast<std::int64_t>(n_own_));
+    for (const auto& h : hooks_)
+      if (h->next_id() >= 0) {
+        ids = h->next_id();
+        break;
+      }
+    apr_.initialise(p_, ids);
     for (int l = 1; l < apr_.levels(); ++l) refinement_bookkeeping();
   }
   with_eos<D>(scene_, [&](auto eos) {
     update_pressure<D>(eos, p_.get(field::Density{}), p_.get(field::Pressure{}), n_own_);
   });
   initial_ = diagnostics();
-  if (open_.on() && !restart) open_.set_initial_mass(initial_.mass, initial_.fluid_mass);
+  if (!restart)
+    for (auto& h : hooks_) h->started(initial_);
   if (restart) {
     t_ = restart->header.time;
     steps_ = restart->header.step;
     stage_time_ = t_;
     initial_.mass = restart->header.initial_mass;
     for (int k = 0; k < 3; ++k) initial_.momentum[k] = restart->header.initial_momentum[k];
-    wall_corrections_ = comm().rank() == 0 ? restart->header.wall_corrections : 0;  // a global count, carried by rank 0
     if (walls_.moving()) update_walls(t_);
   }
 }
@@ -349,6 +347,14 @@ std::uint64_t Simulation<D>::state_checksum() const {
                                        p_.get(field::Mass{}), p_.get(field::GlobalId{})},
                           h);
   return comm().sum_u64(static_cast<std::uint64_t>(h));
+}
+
+template <int D>
+std::int64_t Simulation<D>::next_id() const {
+  if (apr_on_) return apr_.next_id();
+  for (const auto& h : hooks_)
+    if (h->next_id() >= 0) return h->next_id();
+  return 0;
 }
 
 }  // namespace ondine

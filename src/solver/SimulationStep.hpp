@@ -1,18 +1,16 @@
 #pragma once
 // Simulation<D>: the time step (2.102)-(2.103), the integrators (classical RK4, explicit
-// midpoint), particle shifting, the impermeability guard and the state check that stops
+// midpoint) with the step hooks' points (hooks/StepHook.hpp), and the state check that stops
 // a blown-up run. Included by SimulationImpl.hpp only.
 #include <climits>
 #include <cmath>
 #include <sstream>
 
 #include "kernels/Integrator.hpp"
-#include "kernels/ShiftingPass.hpp"
 #include "kernels/StateCheck.hpp"
 #include "kernels/TimeStep.hpp"
-#include "kernels/WallImpermeability.hpp"
 #include "solver/KernelDispatch.hpp"
-#include "solver/Simulation.hpp"
+#include "solver/StepState.hpp"
 
 namespace ondine {
 
@@ -108,9 +106,10 @@ template <int D>
 double Simulation<D>::step(double t_stop) {
   output_saved_ = false;  // finish_output() after a step has nothing to put back
   if (scene_.reorder_interval > 0 && steps_ % scene_.reorder_interval == 0) domain_.reorder_by_cell(p_, n_own_);
-  if (open_.on()) open_classify();
+  StepState<D> state(*this);
+  for (auto& h : hooks_) h->step_start(state);
   if (apr_on_) refinement_step_start();
-  if (open_.on()) open_buffer_state();
+  for (auto& h : hooks_) h->after_lists(state);
   allocate_stage_storage();
   Kokkos::deep_copy(p_.get(field::StagePosition{}), p_.get(field::Position{}));
   Kokkos::deep_copy(p_.get(field::StageVelocity{}), p_.get(field::Velocity{}));
@@ -143,55 +142,13 @@ double Simulation<D>::step(double t_stop) {
     evaluate(true);
     stage_update(dt, 0.0, false);
   }
-  if (scene_.shifting) shift_particles();
-  if (!walls_.empty()) {
-    // kernels/WallImpermeability.hpp: particles found behind a wall at the end of the step
-    update_walls(t_ + dt);
-    const long c = WallImpermeability<D>{walls_.facets(), walls_.facet_cells(), walls_.wall_velocity(), dt, domain_.box(), p_.get(field::StagePosition{}),
-                                         p_.get(field::Position{}), p_.get(field::Velocity{}), walls_.wall_spin()}
-                       .run(n_own_);
-    if (c > 0) domain_.halos_stale();
-    wall_corrections_ += c;
-  }
+  // shifting, the impermeability guard, the start-up damping, ... (hooks/StepHooks.hpp)
+  for (auto& h : hooks_) h->step_end(state, dt);
   check_state(dt);
-  if (t_ < scene_.damping_time) {
-    VelocityDamping<D>{p_.get(field::Velocity{}), std::exp(-dt / (0.1 * scene_.damping_time))}.run(n_own_);
-    domain_.halos_stale();
-  }
   t_ += dt;
   ++steps_;
   stage_time_ = t_;
-  if (open_.on()) open_.set_last_dt(dt);
   return dt;
-}
-
-// Particle shifting (2.107)-(2.111), once per step: into scratch views, then copied back.
-template <int D>
-void Simulation<D>::shift_particles() {
-  ensure_neighbours();
-  domain_.refresh_state_halos(p_);
-  // with a free surface possible: the flags (4.86)-(4.87) of this state, halos included, for
-  // the surface particles' tangential shift (kernels/ShiftingPass.hpp)
-  if (p_.has(field::FreeSurface{})) {
-    update_free_surface();
-    domain_.refresh(p_, field::FreeSurface{});
-  }
-  const std::size_t n = p_.size();
-  if (shifted_x_.extent(0) != n) {
-    shifted_x_ = decltype(shifted_x_)("ondine::Shifting::x", n);
-    shifted_u_ = decltype(shifted_u_)("ondine::Shifting::u", n);
-    shifted_rho_ = decltype(shifted_rho_)("ondine::Shifting::rho", n);
-  }
-  const PassContext<D> c = pass_context(levels().front());
-  scheme_.shifting(c, shifted_x_, shifted_u_, shifted_rho_, 0.02 * scene_.dx);  // at most 0.02 dx per step (kernels/ShiftingPass.hpp)
-  // the buffer layers keep their lattice and state (kernels/OpenBoundary.hpp)
-  if (open_.on()) open_.keep_buffers(p_, c.first, c.end, shifted_x_, shifted_u_, shifted_rho_);
-  // the shifted particles [first, end) back into the state
-  const auto owned = std::make_pair(static_cast<std::size_t>(c.first), static_cast<std::size_t>(c.end));
-  Kokkos::deep_copy(Kokkos::subview(p_.get(field::Position{}), owned, Kokkos::ALL), Kokkos::subview(shifted_x_, owned, Kokkos::ALL));
-  Kokkos::deep_copy(Kokkos::subview(p_.get(field::Velocity{}), owned, Kokkos::ALL), Kokkos::subview(shifted_u_, owned, Kokkos::ALL));
-  Kokkos::deep_copy(Kokkos::subview(p_.get(field::Density{}), owned), Kokkos::subview(shifted_rho_, owned));
-  domain_.halos_stale();
 }
 
 // Stops the run at the first step that produced a non-finite state or a density

@@ -1,0 +1,47 @@
+#pragma once
+// What a step hook (hooks/StepHook.hpp) may read and change of a simulation: the particle
+// set and the owned count, the domain (lists, halos), the compiled passes and the walls.
+// A view on the Simulation for the duration of one call; Included by hooks only.
+#include "solver/Simulation.hpp"
+
+namespace ondine {
+
+template <int D>
+class StepState {
+ public:
+  explicit StepState(Simulation<D>& sim) : sim_(sim) {}
+  const Scene& scene() const { return sim_.scene_; }
+  const Communicator& comm() const { return sim_.comm(); }
+  double time() const { return sim_.t_; }
+  ParticleSet<D>& particles() { return sim_.p_; }
+  int owned() const { return sim_.n_own_; }
+  void set_owned(int n) { sim_.n_own_ = n; }
+  Domain<D>& domain() { return sim_.domain_; }
+  const CompiledScheme<D>& scheme() const { return sim_.scheme_; }
+  double R() const { return sim_.R_; }
+  // the levels of the evaluation (one without refinement zones) and the context of a pass over
+  // a level's SPH particles; context(): the first level's (all particles without zones)
+  std::vector<LevelSpan<D>> levels() const { return sim_.levels(); }
+  PassContext<D> context(const LevelSpan<D>& L) const { return sim_.pass_context(L); }
+  PassContext<D> context() const { return sim_.pass_context(sim_.levels().front()); }
+  // the lists of the current positions (rebuilt if some particle moved too far)
+  void ensure_lists() { sim_.ensure_neighbours(); }
+  // particles were created or removed: the lists (and with zones the roles) are redone
+  void particles_changed() { sim_.invalidate_neighbours(); }
+  // the counter new particles take their global ids from where another part hands them out
+  // too (the refinement's), or null
+  std::int64_t* shared_id_counter() { return sim_.apr_on_ ? &sim_.apr_.id_counter() : nullptr; }
+  bool has_walls() const { return !sim_.walls_.empty(); }
+  const WallModel<D>& walls() const { return sim_.walls_; }
+  void update_walls(double t) { sim_.update_walls(t); }
+  void update_free_surface() { sim_.update_free_surface(); }
+  // the hooks' `shifted` point, for the hook that shifts
+  void shifted(const ShiftedState<D>& s) {
+    for (auto& h : sim_.hooks_) h->shifted(*this, s);
+  }
+
+ private:
+  Simulation<D>& sim_;
+};
+
+}  // namespace ondine

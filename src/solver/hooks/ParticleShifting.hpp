@@ -1,0 +1,51 @@
+#pragma once
+// Particle shifting (2.107)-(2.111) at the end of each step (scheme.shifting or transport:
+// shifting): the shifted state is computed into scratch views, shown to the hooks' `shifted`
+// point (the open boundaries keep their buffers there), then copied back; at most 0.02 dx
+// per step (kernels/ShiftingPass.hpp).
+#include <utility>
+
+#include "solver/StepState.hpp"
+#include "solver/hooks/StepHook.hpp"
+
+namespace ondine {
+
+template <int D>
+class ParticleShifting final : public StepHook<D> {
+ public:
+  const char* name() const override { return "particle_shifting"; }
+  void step_end(StepState<D>& s, double) override {
+    ParticleSet<D>& p = s.particles();
+    s.ensure_lists();
+    s.domain().refresh_state_halos(p);
+    // with a free surface possible: the flags (4.86)-(4.87) of this state, halos included, for
+    // the surface particles' tangential shift
+    if (p.has(field::FreeSurface{})) {
+      s.update_free_surface();
+      s.domain().refresh(p, field::FreeSurface{});
+    }
+    const std::size_t n = p.size();
+    if (x_.extent(0) != n) {
+      x_ = field_view_t<field::Position, D>("ondine::Shifting::x", n);
+      u_ = field_view_t<field::Velocity, D>("ondine::Shifting::u", n);
+      rho_ = field_view_t<field::Density, D>("ondine::Shifting::rho", n);
+    }
+    const PassContext<D> c = s.context();
+    s.scheme().shifting(c, x_, u_, rho_, 0.02 * s.scene().dx);
+    s.shifted(ShiftedState<D>{c.first, c.end, x_, u_, rho_});
+    const auto range = std::make_pair(static_cast<std::size_t>(c.first), static_cast<std::size_t>(c.end));
+    Kokkos::deep_copy(Kokkos::subview(p.get(field::Position{}), range, Kokkos::ALL), Kokkos::subview(x_, range, Kokkos::ALL));
+    Kokkos::deep_copy(Kokkos::subview(p.get(field::Velocity{}), range, Kokkos::ALL), Kokkos::subview(u_, range, Kokkos::ALL));
+    Kokkos::deep_copy(Kokkos::subview(p.get(field::Density{}), range), Kokkos::subview(rho_, range));
+    s.domain().halos_stale();
+  }
+
+ private:
+  // the shifted state, copied back at once (the stage storage keeps the step's start for the
+  // impermeability guard and the blow-up restore)
+  field_view_t<field::Position, D> x_;
+  field_view_t<field::Velocity, D> u_;
+  field_view_t<field::Density, D> rho_;
+};
+
+}  // namespace ondine
