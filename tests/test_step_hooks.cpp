@@ -1,4 +1,4 @@
-// Step hooks (solver/hooks/StepHook.hpp): a toy hook written in this file alone and added with
+// Step hooks (solver/StepHook.hpp): a toy hook written in this file alone and added with
 // one line reaches every named point of a step in order, and changes the state the way it
 // says: a uniform acceleration a applied at each step's end moves a lattice at rest in a
 // periodic box (where every pair force cancels) at exactly u = a t.
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "solver/StepState.hpp"
-#include "solver/hooks/StepHook.hpp"
+#include "solver/StepHook.hpp"
 #include "test_helpers.hpp"
 
 using namespace ondine;

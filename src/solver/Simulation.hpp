@@ -32,7 +32,7 @@
 #include "scene/Scene.hpp"
 #include "solver/AdaptiveRefinement.hpp"
 #include "solver/Domain.hpp"
-#include "solver/hooks/StepHook.hpp"
+#include "solver/StepHook.hpp"
 #include "solver/WallModel.hpp"
 
 namespace ondine {

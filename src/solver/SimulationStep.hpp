@@ -1,6 +1,6 @@
 #pragma once
 // Simulation<D>: the time step (2.102)-(2.103), the integrators (classical RK4, explicit
-// midpoint) with the step hooks' points (hooks/StepHook.hpp), and the state check that stops
+// midpoint) with the step hooks' points (solver/StepHook.hpp), and the state check that stops
 // a blown-up run. Included by SimulationImpl.hpp only.
 #include <climits>
 #include <cmath>

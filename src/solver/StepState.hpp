@@ -1,5 +1,5 @@
 #pragma once
-// What a step hook (hooks/StepHook.hpp) may read and change of a simulation: the particle
+// What a step hook (solver/StepHook.hpp) may read and change of a simulation: the particle
 // set and the owned count, the domain (lists, halos), the compiled passes and the walls.
 // A view on the Simulation for the duration of one call; Included by hooks only.
 #include "solver/Simulation.hpp"

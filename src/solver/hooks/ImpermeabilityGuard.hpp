@@ -4,7 +4,7 @@
 // side. Counts its corrections since t = 0 (carried by checkpoints). Runs with walls.
 #include "kernels/WallImpermeability.hpp"
 #include "solver/StepState.hpp"
-#include "solver/hooks/StepHook.hpp"
+#include "solver/StepHook.hpp"
 
 namespace ondine {
 

@@ -10,7 +10,7 @@
 #include "solver/KernelDispatch.hpp"
 #include "solver/OpenBoundaries.hpp"
 #include "solver/StepState.hpp"
-#include "solver/hooks/StepHook.hpp"
+#include "solver/StepHook.hpp"
 
 namespace ondine {
 

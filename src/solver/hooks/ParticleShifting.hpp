@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "solver/StepState.hpp"
-#include "solver/hooks/StepHook.hpp"
+#include "solver/StepHook.hpp"
 
 namespace ondine {
 

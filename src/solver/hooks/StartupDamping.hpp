@@ -5,7 +5,7 @@
 
 #include "kernels/Integrator.hpp"
 #include "solver/StepState.hpp"
-#include "solver/hooks/StepHook.hpp"
+#include "solver/StepHook.hpp"
 
 namespace ondine {
 

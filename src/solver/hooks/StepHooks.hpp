@@ -1,5 +1,5 @@
 #pragma once
-// The step hooks a scene asks for, in the order their points run (hooks/StepHook.hpp): one
+// The step hooks a scene asks for, in the order their points run (solver/StepHook.hpp): one
 // line each. A new hook is one file in this folder and one line here.
 #include <memory>
 #include <stdexcept>

@@ -4,7 +4,7 @@
 // level; with a free surface possible, from the flags (4.86)-(4.87) of the step's first stage.
 // The integrator moves the particles with u + du0 (kernels/Integrator.hpp).
 #include "solver/StepState.hpp"
-#include "solver/hooks/StepHook.hpp"
+#include "solver/StepHook.hpp"
 
 namespace ondine {
 

@@ -1,6 +1,6 @@
 #pragma once
 // Step hooks (LAMMPS' Fix): a feature that changes the state at named points of the set-up
-// and of a time step. Simulation keeps a list of them (hooks/StepHooks.hpp) and calls each
+// and of a time step. Simulation keeps a list of them (solver/hooks/StepHooks.hpp) and calls each
 // point in the list's order; it does not know which features exist. A hook reaches the
 // state through StepState (solver/StepState.hpp), never through Simulation itself.
 // Every point is collective: each rank calls it with its own particles.
