@@ -228,6 +228,8 @@ class Simulation {
     f(field::AprParent{});
   }
   void build_fluid_region();
+  // the next global id of the first hook that hands ids out (the open boundaries), -1 if none
+  std::int64_t hooks_next_id() const;
   // lists (solver/SimulationLists.hpp): one path, uniform or by level
   void ensure_neighbours();
   // roles: recomputed at a bookkeeping (zones only), kept otherwise

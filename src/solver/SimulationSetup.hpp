@@ -98,13 +98,8 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
     // after the first decomposition: each rank refines the particles it owns)
     apr_ = AdaptiveRefinement<D>(scene_, domain_.box(), skin_len_);
     // ids from the fill's count on (the open boundaries may have dropped particles since)
-    std::int64_t ids = comm().sum(static_cast<std::int64_t>(n_own_));
-    for (const auto& h : hooks_)
-      if (h->next_id() >= 0) {
-        ids = h->next_id();
-        break;
-      }
-    apr_.initialise(p_, ids);
+    const std::int64_t hook_ids = hooks_next_id();
+    apr_.initialise(p_, hook_ids >= 0 ? hook_ids : comm().sum(static_cast<std::int64_t>(n_own_)));
     for (int l = 1; l < apr_.levels(); ++l) refinement_bookkeeping();
   }
   with_eos<D>(scene_, [&](auto eos) {
@@ -350,11 +345,17 @@ std::uint64_t Simulation<D>::state_checksum() const {
 }
 
 template <int D>
-std::int64_t Simulation<D>::next_id() const {
-  if (apr_on_) return apr_.next_id();
+std::int64_t Simulation<D>::hooks_next_id() const {
   for (const auto& h : hooks_)
     if (h->next_id() >= 0) return h->next_id();
-  return 0;
+  return -1;
+}
+
+template <int D>
+std::int64_t Simulation<D>::next_id() const {
+  if (apr_on_) return apr_.next_id();
+  const std::int64_t ids = hooks_next_id();
+  return ids >= 0 ? ids : 0;
 }
 
 }  // namespace ondine
