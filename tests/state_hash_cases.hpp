@@ -41,14 +41,14 @@ inline std::pair<std::uint64_t, std::uint64_t> run_and_hash(const HashCase& c) {
     sim.step(1e30);
     if (s == c.steps / 2) {
       const OutputFrame<2> frame(sim);
-      if (sim.has_walls()) sim.wall_forces();
-      sim.diagnostics();
-      sim.sample_probes();
-      sim.wave_elevations();
-      sim.front_position();
+      if (!sim.walls().empty()) wall_forces(sim);
+      diagnostics(sim);
+      sample_probes(sim);
+      wave_elevations(sim);
+      front_position(sim);
     }
   }
-  return {sim.state_checksum(), sim.refinement_on() ? sim.refinement_checksum() : 0};
+  return {state_checksum(sim), sim.refinement_on() ? refinement_checksum(sim) : 0};
 }
 
 }  // namespace ondine::test

@@ -65,7 +65,7 @@ TEST_CASE("APR refinement conserves mass exactly and momentum to round-off (prol
   const Scene coarse = parse_case(y, "tg.yaml");
   const Scene refined = parse_case(y + "refinement: {zones: [{name: box, min: [0.1, 0.1], max: [0.22, 0.3]}]}\n", "tg.yaml");
   Simulation<2> a(coarse), b(refined);
-  const Diagnostics da = a.diagnostics(), db = b.diagnostics();
+  const Diagnostics da = diagnostics(a), db = diagnostics(b);
   REQUIRE(b.refinement().refined() > 0);
   // the daughters' velocities differ from their mothers' (a non-zero prolongation gradient)
   const HostState h = host_state(b);
@@ -120,7 +120,7 @@ TEST_CASE("APR: a family refined next to a wall lies on the fluid side, on a fin
     }
     if (h.mother(i) == 1) lowest_mother = std::min(lowest_mother, h.x(i, 1));
   }
-  const double dm = b.diagnostics().mass, da = a.diagnostics().mass;
+  const double dm = diagnostics(b).mass, da = diagnostics(a).mass;
   std::printf("APR next to a floor: %lld families (%d daughters), %lld moved off the wall; lowest mother %.3g dx_f, "
               "lowest daughter %.6g dx_f above the floor; leaf mass rel. difference %.2e\n",
               static_cast<long long>(b.refinement().refined()), daughters,
@@ -260,11 +260,11 @@ TEST_CASE("APR: clumped mother guards are shifted apart, towards their daughters
 
 TEST_CASE("APR: mass is conserved to 1e-12 while a uniform flow is refined and derefined", "[apr]") {
   Simulation<2> sim(uniform_flow_scene(1.0, true));
-  const double m0 = sim.diagnostics().mass;
+  const double m0 = diagnostics(sim).mass;
   double worst = 0;
   while (sim.time() < 0.36) {  // the fluid crosses the box and its layers (0.27 m) and leaves it
     sim.step(1.0);
-    worst = std::max(worst, std::abs(sim.diagnostics().mass - m0) / m0);
+    worst = std::max(worst, std::abs(diagnostics(sim).mass - m0) / m0);
   }
   std::printf("APR uniform flow: %lld refinements, %lld daughters deleted, %lld steps, worst leaf-mass drift %.2e\n",
               static_cast<long long>(sim.refinement().refined()), static_cast<long long>(sim.refinement().deleted()),
@@ -479,7 +479,7 @@ TEST_CASE("APR interaction lists: no symmetric pair mixes two radii, guards see 
     }
   // a few steps run (nested levels, one global time step)
   for (int k = 0; k < 5; ++k) sim.step(1.0);
-  CHECK(sim.diagnostics().finite);
+  CHECK(diagnostics(sim).finite);
 }
 
 TEST_CASE("Refinement zones: bad input names the file, line and key", "[unit][case][apr]") {
@@ -552,12 +552,12 @@ TEST_CASE("APR: a zone moving through fluid at rest refines ahead of it and dere
       "time: {duration: 1, output_interval: 1}\n"
       "refinement: {zones: [{name: box, min: [0.1, 0.12], max: [0.2, 0.28], velocity: [1.0, 0]}]}\n";
   Simulation<2> sim(parse_case(y, "moving.yaml"));
-  const double m0 = sim.diagnostics().mass;
+  const double m0 = diagnostics(sim).mass;
   const std::int64_t refined0 = sim.refinement().refined();
   double worst = 0, max_speed = 0;
   while (sim.time() < 0.25) {  // the box moves 0.25 m: past its own length and layers
     sim.step(1.0);
-    const Diagnostics d = sim.diagnostics();
+    const Diagnostics d = diagnostics(sim);
     worst = std::max(worst, std::abs(d.mass - m0) / m0);
     max_speed = std::max(max_speed, d.max_speed);
   }
@@ -635,7 +635,7 @@ TEST_CASE("APR: the force on a refined wall is sampled at the fine level's radiu
       hu(i, 1) = 0.0;
     }
     Kokkos::deep_copy(p.get(field::Velocity{}), hu);
-    const auto f = sim.wall_forces();
+    const auto f = wall_forces(sim);
     REQUIRE(f.size() == 2);
     force = f[0].viscous[0];
     return static_cast<long long>(sim.refinement().refined());

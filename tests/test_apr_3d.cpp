@@ -66,7 +66,7 @@ TEST_CASE("APR 3D: refinement conserves mass exactly and momentum to round-off (
   const Scene refined = parse_case(y + "refinement: {zones: [{name: box, min: [0.1, 0.08, 0.08], max: [0.2, 0.16, 0.16]}]}\n",
                                    "slabs.yaml");
   Simulation<3> a(coarse), b(refined);
-  const Diagnostics da = a.diagnostics(), db = b.diagnostics();
+  const Diagnostics da = diagnostics(a), db = diagnostics(b);
   REQUIRE(b.refinement().refined() > 0);
   const HostState3 h = host_state(b);
   const std::size_t n = b.particles().size();
@@ -134,12 +134,12 @@ TEST_CASE("APR 3D: refinement conserves mass exactly and momentum to round-off (
 
 TEST_CASE("APR 3D: mass is conserved to 1e-12 while a uniform flow is refined and derefined", "[apr3d]") {
   Simulation<3> sim(uniform_flow_scene_3d(1.0));
-  const double m0 = sim.diagnostics().mass;
+  const double m0 = diagnostics(sim).mass;
   const std::int64_t refined0 = sim.refinement().refined();
   double worst = 0;
   while (sim.time() < 0.18) {  // the fluid crosses the mothers' region (0.14 m) and the dx_m / 2 hysteresis, and leaves it
     sim.step(1.0);
-    worst = std::max(worst, std::abs(sim.diagnostics().mass - m0) / m0);
+    worst = std::max(worst, std::abs(diagnostics(sim).mass - m0) / m0);
   }
   const std::int64_t refined = sim.refinement().refined() - refined0, deleted = sim.refinement().deleted();
   std::printf("APR 3D uniform flow: %lld families at the start, %lld refinements and %lld daughters deleted in %lld steps "
@@ -315,7 +315,7 @@ TEST_CASE("APR 3D: a family refined next to 3D walls lies on the fluid side", "[
       min_mother_x = std::min(min_mother_x, h.x(i, 0));
     }
   }
-  const double dm = b.diagnostics().mass, da = a.diagnostics().mass;
+  const double dm = diagnostics(b).mass, da = diagnostics(a).mass;
   std::printf("APR 3D next to walls: %lld families (%d daughters), %lld moved off a wall; lowest mother %.3g dx_f, lowest "
               "daughter %.6g dx_f above the floor; mother nearest the wall x = 0 at %.3g dx_f, daughter at %.6g dx_f; "
               "daughters in [%.4f, %.4f] x [%.4f, %.4f] x [%.4f, %.4f] m (%d on the floor-wall edge); leaf mass rel. "
@@ -349,7 +349,7 @@ TEST_CASE("APR 3D: a family refined next to 3D walls lies on the fluid side", "[
   std::printf("APR 3D next to walls, after %lld steps (%.4f s): %d particles behind a wall, lowest %.3g dx_f above the floor, "
               "nearest %.3g dx_f from a side wall\n",
               static_cast<long long>(b.steps()), b.time(), behind, lowest / dx_f, nearest_side / dx_f);
-  CHECK(b.diagnostics().finite);
+  CHECK(diagnostics(b).finite);
   CHECK(behind == 0);
 }
 
@@ -373,7 +373,7 @@ TEST_CASE("APR 3D: a family in a vertex of a tank (three walls) lies on the flui
     for (int k = 0; k < 3; ++k) nearest[k] = std::min(nearest[k], h.x(i, k));
     if (h.x(i, 0) < dx_f && h.x(i, 1) < dx_f && h.x(i, 2) < dx_f) ++vertex_daughters;
   }
-  const double dm = b.diagnostics().mass, da = a.diagnostics().mass;
+  const double dm = diagnostics(b).mass, da = diagnostics(a).mass;
   std::printf("APR 3D in a tank vertex: %lld families, %lld moved off a wall; daughters nearest the walls x = 0, y = 0 and the "
               "floor at %.6g, %.6g, %.6g dx_f (%d in the vertex cell); leaf mass rel. difference %.2e\n",
               static_cast<long long>(b.refinement().refined()), static_cast<long long>(b.refinement().families_moved()),
@@ -387,7 +387,7 @@ TEST_CASE("APR 3D: a family in a vertex of a tank (three walls) lies on the flui
   for (std::size_t i = 0; i < b.particles().size(); ++i)
     behind += g.x(i, 0) < 0 || g.x(i, 0) > 0.3 || g.x(i, 1) < 0 || g.x(i, 1) > 0.3 || g.x(i, 2) < 0;
   std::printf("APR 3D in a tank vertex, after %lld steps: %d particles behind a wall\n", static_cast<long long>(b.steps()), behind);
-  CHECK(b.diagnostics().finite);
+  CHECK(diagnostics(b).finite);
   CHECK(behind == 0);
 }
 
@@ -411,10 +411,10 @@ TEST_CASE("APR 3D: wall force and probe of still water, read per level", "[apr3d
   auto run = [&](const Scene& s, double& fz, double& probe) {
     Simulation<3> sim(s);
     while (sim.time() < 0.1 - 1e-12) sim.step(0.1);
-    const auto f = sim.wall_forces();
+    const auto f = wall_forces(sim);
     REQUIRE(f.size() == 1);
     fz = f[0].pressure[2];
-    probe = sim.sample_probes()[0].pressure;
+    probe = sample_probes(sim)[0].pressure;
   };
   double fc, pc, ff, pf, fa, pa;
   run(parse_case(y, "still_3d.yaml"), fc, pc);

@@ -97,7 +97,7 @@ inline std::vector<std::pair<double, double>> dam_break_front(Simulation<2>& sim
   for (int k = 0; k <= 34; ++k) {
     const double t = 0.005 * k;
     while (sim.time() < t * (1 - 1e-12)) sim.step(t);
-    front.emplace_back(t * std::sqrt(2 * g / a), sim.front_position() / a);
+    front.emplace_back(t * std::sqrt(2 * g / a), front_position(sim) / a);
   }
   return front;
 }

@@ -91,7 +91,7 @@ void check_halos(const Simulation<2>& sim) {
   for (int k = 0; k < 2; ++k) {
     len[k] = s.domain.max[k] - s.domain.min[k];
     periodic[k] = s.periodic[k];
-    spans[k] = sim.decomposition().spans(comm.rank(), k);
+    spans[k] = sim.domain().decomposition().spans(comm.rank(), k);
   }
   const std::vector<Row> all = gather_owned(sim);
   const std::vector<Row> local = local_rows(sim, sim.particles().size());
@@ -130,7 +130,7 @@ void check_halos(const Simulation<2>& sim) {
     mismatches += same ? 0 : 1;
     ++checked;
   }
-  INFO("rank " << comm.rank() << ": " << sim.size() << " owned, " << sim.halo_count() << " halos");
+  INFO("rank " << comm.rank() << ": " << sim.size() << " owned, " << sim.domain().exchange().halo_count() << " halos");
   CHECK(checked == static_cast<std::int64_t>(sim.size()));
   CHECK(mismatches == 0);
   CHECK(comm.sum(checked) == static_cast<std::int64_t>(all.size()));
@@ -150,29 +150,29 @@ TEST_CASE("Halos equal the brute-force set of remote neighbours, periodic images
   const Communicator comm;
   for (const Scene& s : {periodic_flow(), sloshing_tank()}) {
     Simulation<2> sim(s);
-    INFO(sim.decomposition().describe());
+    INFO(sim.domain().decomposition().describe());
     sim.evaluate();
     check_halos(sim);
     for (int k = 0; k < 30; ++k) sim.step(1e9);  // particles move: list rebuilds, migration
     sim.evaluate();
     check_halos(sim);
-    if (comm.size() > 1) CHECK(sim.migrated() > 0);
+    if (comm.size() > 1) CHECK(sim.domain().exchange().migrated() > 0);
   }
 }
 
 TEST_CASE("Migration keeps every global id exactly once over 500 steps of sloshing and of a periodic flow", "[mpi]") {
   for (const Scene& s : {sloshing_tank(), periodic_flow()}) {
     Simulation<2> sim(s);
-    const std::int64_t n = sim.global_size();
-    const double mass0 = sim.diagnostics().mass;
+    const std::int64_t n = global_size(sim);
+    const double mass0 = diagnostics(sim).mass;
     for (int step = 1; step <= 500; ++step) {
       sim.step(1e9);
       if (step % 100 == 0) check_ids(sim, n);
     }
-    CHECK(sim.global_size() == n);
-    CHECK(std::abs(sim.diagnostics().mass - mass0) <= 1e-12 * mass0);
-    INFO("migrated " << sim.migrated() << ", rebalances " << sim.rebalances() << ", tau " << sim.balance());
-    if (Communicator().size() > 1) CHECK(sim.migrated() > 0);
+    CHECK(global_size(sim) == n);
+    CHECK(std::abs(diagnostics(sim).mass - mass0) <= 1e-12 * mass0);
+    INFO("migrated " << sim.domain().exchange().migrated() << ", rebalances " << sim.domain().rebalances() << ", tau " << sim.domain().balance());
+    if (Communicator().size() > 1) CHECK(sim.domain().exchange().migrated() > 0);
   }
 }
 
@@ -180,7 +180,7 @@ TEST_CASE("ORB balances the work and the decomposition covers the grid exactly o
   const Communicator comm;
   Simulation<2> sim(sloshing_tank());
   sim.evaluate();
-  const Decomposition& d = sim.decomposition();
+  const Decomposition& d = sim.domain().decomposition();
   if (comm.size() == 1) return;
   REQUIRE(d.ranks() == comm.size());
   // every cell has exactly one owner, and it is the one the tree gives
@@ -200,7 +200,7 @@ TEST_CASE("ORB balances the work and the decomposition covers the grid exactly o
   // here, water in the lower half), so each of the two levels of cuts can miss its
   // target by half a slab, up to 1/30 of the work, 13 % of a quarter share:
   // tau >= (1 - 2 x 0.13) / (1 + 2 x 0.13) = 0.59
-  CHECK(sim.balance() >= 0.59);
+  CHECK(sim.domain().balance() >= 0.59);
 }
 
 // APR gathers the dying and the refining mothers' ids of every rank (AdaptiveRefinement::update)

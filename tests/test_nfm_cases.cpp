@@ -29,7 +29,7 @@ TEST_CASE("The fill leaves no particle inside a wall or closer than dx/2 to one"
     Simulation<2> sim(load_case(src + "/cases/" + c));
     INFO(c << ": " << sim.size() << " particles");
     CHECK(sim.size() > 100);
-    CHECK(sim.wall_leaks(0.5 * sim.scene().dx * (1 - 1e-6)) == 0);
+    CHECK(wall_leaks(sim, 0.5 * sim.scene().dx * (1 - 1e-6)) == 0);
   }
   // the body's inside is empty: 1 m x 0.8 m of water less the 0.03 m^2 body, at dx = 0.02
   Simulation<2> body(load_case(src + "/cases/polygon_body_2d.yaml"));
@@ -44,13 +44,13 @@ TEST_CASE("fluid_blocks[i].wall_clearance keeps lattice points 0.01 dx from the 
   CHECK(sim.size() == 200);
   CHECK(Simulation<2>(load_case(src + "/cases/near_wall_start_2d.yaml", {"fluid_blocks.0.wall_clearance=0.5"})).size() == 18 * 9);
   // closer than 0.02 dx to a wall: the bottom row (20), the side columns (2 x 10), the two corner points counted twice
-  CHECK(sim.wall_leaks(0.02 * dx) == 20 + 2 * 10 - 2);
-  CHECK(sim.wall_leaks(0.0099 * dx) == 0);
+  CHECK(wall_leaks(sim, 0.02 * dx) == 20 + 2 * 10 - 2);
+  CHECK(wall_leaks(sim, 0.0099 * dx) == 0);
 }
 
 TEST_CASE("Free-surface detection flags the top row of a still tank and nothing along the walls", "[nfm][free_surface]") {
   Simulation<2> sim(load_case(src + "/cases/hydrostatic_tank_2d.yaml"));
-  sim.update_free_surface();
+  update_free_surface(sim);
   const auto& p = sim.particles();
   auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Position{}));
   auto fs = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::FreeSurface{}));
@@ -71,9 +71,9 @@ TEST_CASE("Hydrostatic tank: pressure profile, rest and impermeability after 2 s
   INFO("pressure_linf " << e.at("pressure_linf") << ", Ek/Ep " << e.at("kinetic_over_potential"));
   CHECK(e.at("pressure_linf") < 0.02);            // issue threshold: 2 % of rho g H away from the surface layer
   CHECK(e.at("kinetic_over_potential") < 1e-3);
-  CHECK(sim.wall_leaks() == 0);
+  CHECK(wall_leaks(sim) == 0);
   // the force on the tank is the weight of the water (1000 x 9.81 x 0.5 N/m) within 2 %
-  const auto f = sim.wall_forces();
+  const auto f = wall_forces(sim);
   REQUIRE(f.size() == 1);
   CHECK(f[0].pressure[1] == Approx(-4905.0).epsilon(0.02));
   CHECK(std::abs(f[0].pressure[0]) < 1e-6 * 4905);
@@ -81,13 +81,13 @@ TEST_CASE("Hydrostatic tank: pressure profile, rest and impermeability after 2 s
 
 TEST_CASE("Polygonal body in a still tank: the force on it is the buoyancy", "[nfm][case][body]") {
   Simulation<2> sim = run_case("polygon_body_2d.yaml", {});
-  const auto f = sim.wall_forces();
+  const auto f = wall_forces(sim);
   REQUIRE(f.size() == 2);
   const double buoyancy = 1000 * 9.81 * 0.03;
   INFO("body force " << f[1].pressure[0] << ", " << f[1].pressure[1] << " against " << buoyancy);
   CHECK(f[1].pressure[1] == Approx(buoyancy).epsilon(0.03));
   CHECK(std::abs(f[1].pressure[0]) < 0.01 * buoyancy);
-  CHECK(sim.wall_leaks() == 0);
+  CHECK(wall_leaks(sim) == 0);
 }
 
 TEST_CASE("Poiseuille flow between no-slip NFM walls follows the start-up solution", "[nfm][case][poiseuille]") {
@@ -95,7 +95,7 @@ TEST_CASE("Poiseuille flow between no-slip NFM walls follows the start-up soluti
   const double l2 = reference_errors(sim).at("velocity_l2");
   INFO("velocity L2 error " << l2);
   CHECK(l2 < 0.01);
-  CHECK(sim.wall_leaks() == 0);
+  CHECK(wall_leaks(sim) == 0);
   // wall shear: rho nu du/dy at the wall times the wall length, from the start-up series
   double dudy = 0.8 * 1.0 / (2 * 0.1);
   for (int n = 0; n < 200; ++n) {
@@ -103,7 +103,7 @@ TEST_CASE("Poiseuille flow between no-slip NFM walls follows the start-up soluti
     dudy -= 4 * 0.8 / (0.1 * M_PI * M_PI * k * k) * std::exp(-k * k * M_PI * M_PI * 0.1 * 3.0);
   }
   const double expected = 1000 * 0.1 * dudy * 0.4;
-  const auto f = sim.wall_forces();
+  const auto f = wall_forces(sim);
   INFO("viscous force on the walls " << f[0].viscous[0] << ", " << f[1].viscous[0] << " against " << expected);
   CHECK(f[0].viscous[0] == Approx(expected).epsilon(0.1));
   CHECK(f[1].viscous[0] == Approx(expected).epsilon(0.2));
@@ -173,7 +173,7 @@ TEST_CASE("Dam break (25 x 50 particles): surge front against Martin & Moyce, no
   // issue thresholds: within 20 % of the experiment for T <= 3, speed within 10 % over 1.5 <= T <= 3
   CHECK(e.at("front_max_relative_error") < 0.20);
   CHECK(e.at("front_speed_relative_error") < 0.10);
-  CHECK(sim.wall_leaks(0.0) == 0);  // nobody crossed a wall
+  CHECK(wall_leaks(sim, 0.0) == 0);  // nobody crossed a wall
 }
 
 // The NFM Morris Laplacian with its wall term (thesis 4.84-4.85), evaluated by
@@ -234,10 +234,10 @@ time: {duration: 1, output_interval: 1})";
 // at t = 1 (docs/validation.md); the bound below guards against a regression.
 TEST_CASE("Lid-driven cavity with the background-pressure correction keeps its particles", "[nfm][case][cavity]") {
   Simulation<2> sim = run_case("lid_driven_cavity_2d.yaml", {"time.duration=1"});
-  const Diagnostics d = sim.diagnostics();
+  const Diagnostics d = diagnostics(sim);
   CHECK(d.finite);
   CHECK(d.outside_domain == 0);
-  CHECK(sim.wall_leaks(0.0) <= 4);
+  CHECK(wall_leaks(sim, 0.0) <= 4);
   CHECK(d.rho_max < 1.01);
   CHECK(d.rho_min > 0.99);
 }

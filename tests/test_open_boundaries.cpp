@@ -79,7 +79,7 @@ void run_until(Simulation<D>& sim, double t) {
 // the total and the fluid region's mass changes against the open boundaries' counters
 template <int D>
 void check_mass_balance(const Simulation<D>& sim) {
-  const Diagnostics d = sim.diagnostics();
+  const Diagnostics d = diagnostics(sim);
   const OpenBoundaries<D>& ob = sim.template find_hook<OpenBoundaryStep<D>>()->boundaries();
   const OpenFlux t = ob.total();
   const double created = t.created, removed = t.removed, in = t.mass_in, out = t.mass_out;
@@ -178,7 +178,7 @@ double pulse_return(bool non_reflecting) {
   double incident = 0, back = 0;
   for (double t = 0.005; t <= 0.3 + 1e-9; t += 0.005) {
     run_until(sim, t);
-    const auto p = sim.sample_at({centre, near_out});
+    const auto p = sample_at(sim, {centre, near_out});
     if (t < 0.1) incident = std::max(incident, std::abs(p[1].pressure));
     if (t > 0.15) back = std::max(back, std::abs(p[0].pressure));
   }
@@ -220,7 +220,7 @@ TEST_CASE("open boundaries: plane channel flow with an inlet and an outlet (Re =
   for (int k = 1; k < 20; ++k) pts.push_back({3.0, k / 20.0, 0});
   pts.push_back({1.5, 0.5, 0});
   pts.push_back({3.5, 0.5, 0});
-  const auto s = sim.sample_at(pts);
+  const auto s = sample_at(sim, pts);
   // the mean velocity at x = 3 (trapezoid, u = 0 at the walls), then the profile's shape
   double mean = 0;
   for (int k = 0; k < 19; ++k) mean += s[k].velocity[0] / 20.0;

@@ -146,7 +146,7 @@ TEST_CASE("Riemann-SPH dam break (a/25): the surge front against Martin & Moyce,
   INFO("front max relative error " << e.at("front_max_relative_error") << ", speed error " << e.at("front_speed_relative_error"));
   CHECK(e.at("front_max_relative_error") < 0.20);
   CHECK(e.at("front_speed_relative_error") < 0.10);
-  CHECK(sim.wall_leaks(0.0) == 0);
+  CHECK(wall_leaks(sim, 0.0) == 0);
 }
 
 TEST_CASE("scheme.flux: riemann refuses delta-SPH, the renormalised continuity, a held gradient and refinement zones", "[unit][case]") {

@@ -24,7 +24,7 @@ class DiagnosticsSeries : public Observer<D> {
     csv_.text() << now.sim.time() << "," << now.sim.steps() << "," << now.last_dt << "," << d.mass;
     for (int k = 0; k < D; ++k) csv_.text() << "," << d.momentum[k];
     csv_.text() << "," << d.kinetic_energy << "," << d.max_speed << "," << d.rho_min << "," << d.rho_max << "," << d.outside_domain
-                << "," << now.sim.balance() << "\n";
+                << "," << now.sim.domain().balance() << "\n";
     csv_.flush();
     keep(d.kinetic_energy, d.rho_min, d.rho_max, d.outside_domain);
   }

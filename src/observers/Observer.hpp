@@ -20,7 +20,7 @@ struct OutputInstant {
   std::map<std::string, double> posted;  // figures of this instant from earlier observers ("P1", "body.fx")
   // the integral quantities, computed once, when first asked for
   const Diagnostics& diagnostics() {
-    if (!have_diagnostics_) d_ = sim.diagnostics();
+    if (!have_diagnostics_) d_ = ondine::diagnostics(sim);
     have_diagnostics_ = true;
     return d_;
   }

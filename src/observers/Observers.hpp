@@ -21,7 +21,7 @@ template <int D>
 std::vector<std::unique_ptr<Observer<D>>> make_observers(const Scene& s, const std::string& out, bool writer, Simulation<D>& sim) {
   std::vector<std::unique_ptr<Observer<D>>> list;
   const ReferenceKind ref = s.reference.kind;
-  if (sim.has_walls()) list.push_back(std::make_unique<WallForceSeries<D>>(out, writer, sim));
+  if (!sim.walls().empty()) list.push_back(std::make_unique<WallForceSeries<D>>(out, writer, sim));
   if (ref == ReferenceKind::MartinMoyce) list.push_back(std::make_unique<SurgeFront<D>>(s, out, writer));
   list.push_back(std::make_unique<DiagnosticsSeries<D>>(s, out, writer));
   if (sim.template find_hook<OpenBoundaryStep<D>>()) list.push_back(std::make_unique<OpenMassBalance<D>>(out, writer, sim));

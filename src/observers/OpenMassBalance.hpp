@@ -40,7 +40,7 @@ class OpenMassBalance : public Observer<D> {
   void resume(double t_start, ResumedRows&) override { csv_.resume(t_start); }
 
   void add_figures(std::map<std::string, double>& errors, RunEnd<D>& end) const override {
-    const Diagnostics d = end.sim.diagnostics();
+    const Diagnostics d = diagnostics(end.sim);
     const OpenBoundaries<D>& ob = open_;
     const OpenFlux t = ob.total();
     errors["open_mass_balance"] = std::abs(d.mass - ob.initial_mass() - (t.created - t.removed)) / ob.initial_mass();

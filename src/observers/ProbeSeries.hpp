@@ -20,7 +20,7 @@ class ProbeSeries : public SeriesObserver<D> {
   }
 
   void record(OutputInstant<D>& now) override {
-    const auto samples = now.sim.sample_probes();
+    const auto samples = sample_probes(now.sim);
     std::ostringstream& row = this->row(now.sim);
     for (std::size_t k = 0; k < samples.size(); ++k) {
       now.posted[probes_[k].name] = samples[k].pressure;

@@ -15,8 +15,8 @@ class ReferenceFigures : public Observer<D> {
   void add_figures(std::map<std::string, double>& errors, RunEnd<D>& end) const override {
     if (end.diverged) return;
     for (const auto& [k, v] : reference_errors(end.sim)) errors[k] = v;
-    if (end.sim.scene().reference.kind == ReferenceKind::Hydrostatic && end.sim.has_walls()) {
-      const double worst = buoyancy_error(end.sim.scene(), end.sim.wall_forces());
+    if (end.sim.scene().reference.kind == ReferenceKind::Hydrostatic && !end.sim.walls().empty()) {
+      const double worst = buoyancy_error(end.sim.scene(), wall_forces(end.sim));
       if (worst >= 0) errors["buoyancy_error"] = worst;
     }
   }

@@ -21,7 +21,7 @@ class SurgeFront : public Observer<D> {
 
   void record(OutputInstant<D>& now) override {
     const double T = now.sim.time() * time_scale_;
-    const double Z = (now.sim.front_position() - x0_) / a_;
+    const double Z = (front_position(now.sim) - x0_) / a_;
     points_.emplace_back(T, Z);
     csv_.text() << T << "," << Z << "," << reference::interpolate(reference::martin_moyce_front(), T) << "\n";
     csv_.flush();

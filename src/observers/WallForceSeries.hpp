@@ -12,7 +12,7 @@ class WallForceSeries : public SeriesObserver<D> {
  public:
   WallForceSeries(const std::string& out_dir, bool writer, Simulation<D>& sim) : SeriesObserver<D>(out_dir, "walls.csv", writer) {
     csv_.text() << "time,step";
-    for (const WallForce& f : sim.wall_forces()) {
+    for (const WallForce& f : wall_forces(sim)) {
       for (const char* part : {"pressure", "viscous"})
         for (int k = 0; k < D; ++k) csv_.text() << "," << f.name << "." << part << "_f" << "xyz"[k];
       for (int k = D == 2 ? 2 : 0; k < 3; ++k) csv_.text() << "," << f.name << ".moment_" << "xyz"[k];
@@ -22,7 +22,7 @@ class WallForceSeries : public SeriesObserver<D> {
 
   void record(OutputInstant<D>& now) override {
     std::ostringstream& row = this->row(now.sim);
-    for (const WallForce& f : now.sim.wall_forces()) {
+    for (const WallForce& f : wall_forces(now.sim)) {
       now.posted[f.name + ".fx"] = f.pressure[0] + f.viscous[0];
       now.posted[f.name + ".fy"] = f.pressure[1] + f.viscous[1];
       for (int k = 0; k < D; ++k) row << "," << f.pressure[k];

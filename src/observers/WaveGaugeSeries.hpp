@@ -17,7 +17,7 @@ class WaveGaugeSeries : public SeriesObserver<D> {
   }
 
   void record(OutputInstant<D>& now) override {
-    const auto levels = now.sim.wave_elevations();
+    const auto levels = wave_elevations(now.sim);
     std::ostringstream& row = this->row(now.sim);
     for (std::size_t k = 0; k < levels.size(); ++k) {
       now.posted[gauges_[k].name] = levels[k];

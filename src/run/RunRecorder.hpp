@@ -53,7 +53,7 @@ class RunRecorder {
 
   // every observer's figures over the whole run and at its end into `errors`
   void add_figures(std::map<std::string, double>& errors, Simulation<D>& sim, bool diverged) const {
-    RunEnd<D> end{sim, sim.diagnostics().mass, diverged};
+    RunEnd<D> end{sim, diagnostics(sim).mass, diverged};
     for (const auto& o : observers_) o->add_figures(errors, end);
   }
 

@@ -62,13 +62,13 @@ class Checkpointer {
     const Diagnostics& d0 = sim.initial_diagnostics();
     h.initial_mass = d0.mass;
     for (int k = 0; k < 3; ++k) h.initial_momentum[k] = d0.momentum[k];
-    h.checksum = sim.state_checksum();
+    h.checksum = state_checksum(sim);
     sim.save_hooks(h);  // the impermeability guard's count, the open boundaries' state
     if (sim.refinement_on()) {
-      h.refinement = sim.refinement_state();
+      h.refinement = refinement_state(sim);
       h.refinement.zones = refinement_zone_text(scene_);
     }
-    write_checkpoint(path_, h, static_cast<std::int64_t>(sim.size()), sim.state_rows(), comm_);
+    write_checkpoint(path_, h, static_cast<std::int64_t>(sim.size()), state_rows(sim), comm_);
     sim.invalidate_neighbours();  // a restart from this file takes the same path from here
     last_ = Clock::now();
     const double took = std::chrono::duration<double>(last_ - c0).count();
@@ -106,9 +106,9 @@ Simulation<D> start_simulation(const Scene& scene, const RunOptions& opt, const 
     }
   };
   Simulation<D> sim = make();
-  if (restart && sim.state_checksum() != restart->header.checksum)
+  if (restart && state_checksum(sim) != restart->header.checksum)
     throw CheckpointError(opt.restart + ": the particle state does not match the checksum stored with it: the file is corrupted");
-  if (restart && sim.refinement_on() && sim.refinement_checksum() != restart->header.refinement.checksum)
+  if (restart && sim.refinement_on() && refinement_checksum(sim) != restart->header.refinement.checksum)
     throw CheckpointError(opt.restart + ": the APR fields (birth_level, level, guard, mother, parent_id) do not match the checksum "
                           "stored with them (refinement_checksum): the file is corrupted");
   return sim;
@@ -160,25 +160,25 @@ nlohmann::json run_summary(const Scene& scene, const RunOptions& opt, const Simu
   j["loop_seconds"] = loop_seconds;
   j["particle_steps_per_second"] = loop_seconds > 0 ? report.particles * static_cast<double>(report.steps) / loop_seconds : 0.0;
   j["mean_neighbours"] = pair_samples > 0 ? pair_sum / pair_samples / report.particles : 0.0;
-  j["neighbour_list_builds"] = sim.neighbour_builds();
+  j["neighbour_list_builds"] = sim.domain().builds();
   j["backend"] = default_backend();
   j["threads"] = backend_threads();
   j["ranks"] = comm.size();
-  j["parallel"] = {{"balance_tau", sim.balance()},
-                   {"rebalances", sim.rebalances()},
-                   {"migrated_particles", sim.migrated()},
-                   {"exchange_seconds_max", comm.max(sim.exchange_seconds())},
-                   {"exchange_share_of_loop", loop_seconds > 0 ? comm.max(sim.exchange_seconds()) / loop_seconds : 0.0},
+  j["parallel"] = {{"balance_tau", sim.domain().balance()},
+                   {"rebalances", sim.domain().rebalances()},
+                   {"migrated_particles", sim.domain().exchange().migrated()},
+                   {"exchange_seconds_max", comm.max(sim.domain().exchange().seconds())},
+                   {"exchange_share_of_loop", loop_seconds > 0 ? comm.max(sim.domain().exchange().seconds()) / loop_seconds : 0.0},
                    // the slowest rank's time in each, over the loop's (a rebalance's migration and halos count in both)
-                   {"halo_share_of_loop", loop_seconds > 0 ? comm.max(sim.halo_seconds()) / loop_seconds : 0.0},
-                   {"migration_share_of_loop", loop_seconds > 0 ? comm.max(sim.migration_seconds()) / loop_seconds : 0.0},
-                   {"rebalance_share_of_loop", loop_seconds > 0 ? comm.max(sim.rebalance_seconds()) / loop_seconds : 0.0}};
+                   {"halo_share_of_loop", loop_seconds > 0 ? comm.max(sim.domain().exchange().halo_seconds()) / loop_seconds : 0.0},
+                   {"migration_share_of_loop", loop_seconds > 0 ? comm.max(sim.domain().exchange().migration_seconds()) / loop_seconds : 0.0},
+                   {"rebalance_share_of_loop", loop_seconds > 0 ? comm.max(sim.domain().rebalance_seconds()) / loop_seconds : 0.0}};
   j["checkpoints"] = checkpoints.summary();
   if (sim.refinement_on()) {
     const AdaptiveRefinement<D>& apr = sim.refinement();
     j["refinement"] = {{"levels", apr.levels()},
-                       {"particles", sim.global_size()},
-                       {"sph_particles", sim.sph_particles()},
+                       {"particles", global_size(sim)},
+                       {"sph_particles", sph_particles(sim)},
                        {"guards", apr.guards()},
                        {"passive_guards", apr.passive()},
                        {"refined", apr.refined()},
@@ -205,7 +205,7 @@ nlohmann::json run_summary(const Scene& scene, const RunOptions& opt, const Simu
                  {"eos", to_string(scene.eos)},
                  {"viscous_term", to_string(scene.viscous_term)},
                  {"nu", scene.nu},
-                 {"morris_lattice_factor", sim.morris_factor()},
+                 {"morris_lattice_factor", sim.scheme().morris_factor},
                  {"consistent_laplacian", uses_consistent_laplacian(scene)},
                  {"flux", to_string(scene.flux)},
                  {"riemann_reconstruction", scene.flux == FluxScheme::Riemann ? (scene.riemann_muscl ? "muscl_minmod" : "none") : "-"},
@@ -240,7 +240,7 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
   else recorder.start();
 
   RunReport report;
-  report.particles = static_cast<std::size_t>(sim.global_size());
+  report.particles = static_cast<std::size_t>(global_size(sim));
   report.status = "completed";
   double last_dt = 0;
   if (!restarting && !recorder.record(sim, last_dt).finite) report.status = "diverged";
@@ -272,7 +272,7 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
         break;
       }
       if (timing.pair_samples < 8) {
-        timing.pair_sum += static_cast<double>(sim.pair_count());
+        timing.pair_sum += static_cast<double>(pair_count(sim));
         ++timing.pair_samples;
       }
     }

@@ -1,4 +1,6 @@
 #include "solver/SimulationImpl.hpp"
 namespace ondine {
 template class Simulation<2>;
+template class OutputFrame<2>;
+template void update_free_surface<2>(Simulation<2>&);
 }

@@ -13,6 +13,7 @@
 #include "kernels/apr/LevelSums.hpp"
 #include "solver/KernelDispatch.hpp"
 #include "solver/StepState.hpp"
+#include "solver/hooks/Refinement.hpp"
 
 namespace ondine {
 
@@ -20,46 +21,22 @@ template <int D>
 void Simulation<D>::update_walls(double t) {
   if (walls_.moving()) {
     walls_.move_to(t);
-    for (WallModel<D>& w : level_walls_)
-      if (!w.empty()) w.move_to(t);
+    if (refinement_) refinement_->move_walls(t);
   }
-  region_.facets = walls_.facets();
-  region_.cells = walls_.facet_cells();
-}
-
-// Viscous flows along no-slip walls take the consistent Laplacian (kernels/ConsistentLaplacian.hpp).
-template <int D>
-bool Simulation<D>::consistent_laplacian() const {
-  return !walls_.empty() && uses_consistent_laplacian(scene_);
-}
-
-// The equation of state of the NFM wall pressure (4.14), for the wall flux and the wall
-// forces alike.
-template <int D>
-WallEos Simulation<D>::wall_eos() const {
-  const double eos_gamma = scene_.eos == EosLaw::Tait ? scene_.tait_gamma : 1.0;
-  return WallEos{scene_.rho0, scene_.c0, eos_gamma};
-}
-
-// With the consistent Laplacian: its weight array sized for n particles (grown with some slack).
-template <int D>
-void Simulation<D>::size_laplacian_weights(int n) {
-  if (consistent_laplacian() && static_cast<int>(laplacian_weights_.extent(0)) < n)
-    laplacian_weights_ = LaplacianWeightView<D>("ondine::NFM::laplacian_weights", n + n / 8 + 16);
 }
 
 // (2.105): P_min = max(0, -min_k P_k) over the owned particles of every rank
 template <int D>
-double Simulation<D>::background_pressure_min(const field_view_t<field::Pressure, D>& P, int n) const {
+double background_pressure_min(const field_view_t<field::Pressure, D>& P, int n, const Communicator& comm) {
   double pmin = 0;
   Kokkos::parallel_reduce("ondine::BackgroundPressure::min", Kokkos::RangePolicy<ExecSpace>(0, n), apr::MinOf{P},
                           Kokkos::Min<double>(pmin));
-  pmin = comm().min(pmin);
+  pmin = comm.min(pmin);
   return pmin < 0 ? -pmin : 0.0;
 }
 
 template <int D>
-PassContext<D> Simulation<D>::pass_context(const LevelSpan<D>& L) const {
+PassContext<D> Simulation<D>::context(const LevelSpan<D>& L) const {
   PassContext<D> c;
   c.first = L.first;
   c.end = L.active_end;
@@ -101,14 +78,14 @@ PassContext<D> Simulation<D>::pass_context(const LevelSpan<D>& L) const {
   c.facets = walls_.facets();
   c.facet_cells = walls_.facet_cells();
   c.weights = laplacian_weights_;
-  c.eos = wall_eos();
+  c.eos = WallEos{scene_.rho0, scene_.c0, scene_.eos == EosLaw::Tait ? scene_.tait_gamma : 1.0};  // (4.14)
   c.nu = scene_.nu;
   c.rho0 = scene_.rho0;
   c.morris_factor = scheme_.morris_factor;
   c.clearance = 0.5 * L.dx;
   c.velocity_muscl = scene_.wall_velocity_reconstruction;
-  if (apr_on_) {
-    c.zones = apr_.zones();
+  if (refinement_) {
+    c.zones = refinement_->apr().zones();
     take(c.birth, field::AprBirthLevel{});
     take(c.guard, field::AprGuard{});
     take(c.mother, field::AprMother{});
@@ -124,15 +101,14 @@ void Simulation<D>::evaluate(const bool later_stage) {
   const int n = n_own_, n_all = static_cast<int>(p_.size());
   const bool walls = !walls_.empty();
   if (walls) update_walls(stage_time_);
-  if (apr_on_) {
-    apr_.interpolate(p_, domain_.box(), false, walls_.near_facets());  // guards from this stage's SPH particles (5.24)
-    // several ranks: the guards' halo copies (their density gradient travels after the gradient pass)
-    domain_.refresh(p_, field::Velocity{}, field::Density{});
-  }
-  size_laplacian_weights(n);
+  StepState<D> state(*this);
+  if (refinement_) refinement_->interpolate_guards(state);  // guards from this stage's SPH particles (5.24)
+  // next to no-slip walls: the consistent Laplacian's weights (grown with some slack)
+  if (walls && uses_consistent_laplacian(scene_) && static_cast<int>(laplacian_weights_.extent(0)) < n)
+    laplacian_weights_ = LaplacianWeightView<D>("ondine::NFM::laplacian_weights", n + n / 8 + 16);
   const auto rho = p_.get(field::Density{}), P = p_.get(field::Pressure{});
   with_eos<D>(scene_, [&](auto eos) { update_pressure<D>(eos, rho, P, n_all); });
-  const double P_min = scene_.background_pressure ? background_pressure_min(P, n) : 0.0;
+  const double P_min = scene_.background_pressure ? background_pressure_min<D>(P, n, comm()) : 0.0;
   const auto x = p_.get(field::Position{});
   const auto gamma = walls ? p_.get(field::ShepardGamma{}) : field_view_t<field::ShepardGamma, D>();
   // the density gradient feeds delta-SPH, the MUSCL wall state (4.30) and Riemann-SPH's MUSCL
@@ -148,10 +124,9 @@ void Simulation<D>::evaluate(const bool later_stage) {
     const auto range = Kokkos::RangePolicy<ExecSpace>(L.first, L.active_end);
     if (walls)
       Kokkos::parallel_for("ondine::NFM::shepard_gamma", range, ShepardGammaPass<D>{walls_.facets(), walls_.facet_cells(), L.R, domain_.box(), x, gamma});
-    if (gradient_pass) scheme_.density_gradient(pass_context(L));
+    if (gradient_pass) scheme_.density_gradient(context(L));
   }
   // the hooks' point before the flux (scheme.transport: ale: the transport velocity, 2.113)
-  StepState<D> state(*this);
   for (auto& h : hooks_) h->before_flux(state, later_stage);
   // with zones the guards' density gradient came with their interpolation (GuardInterpolation.hpp)
   if (gradient) domain_.refresh(p_, field::DensityGradient{});
@@ -161,7 +136,7 @@ void Simulation<D>::evaluate(const bool later_stage) {
   }
   for (const LevelSpan<D>& L : levels) {
     if (L.active_end == L.first) continue;
-    PassContext<D> c = pass_context(L);
+    PassContext<D> c = context(L);
     c.P_min = P_min;
     scheme_.flux(c);
     if (walls) scheme_.wall_flux(c);

@@ -5,4 +5,4 @@
 #include "solver/SimulationLists.hpp"
 #include "solver/SimulationEvaluate.hpp"
 #include "solver/SimulationStep.hpp"
-#include "solver/SimulationObservers.hpp"
+#include "solver/SimulationOutput.hpp"

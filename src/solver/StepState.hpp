@@ -13,6 +13,7 @@ class StepState {
   const Scene& scene() const { return sim_.scene_; }
   const Communicator& comm() const { return sim_.comm(); }
   double time() const { return sim_.t_; }
+  std::int64_t steps() const { return sim_.steps_; }
   ParticleSet<D>& particles() { return sim_.p_; }
   int owned() const { return sim_.n_own_; }
   void set_owned(int n) { sim_.n_own_ = n; }
@@ -22,19 +23,28 @@ class StepState {
   // the levels of the evaluation (one without refinement zones) and the context of a pass over
   // a level's SPH particles; context(): the first level's (all particles without zones)
   std::vector<LevelSpan<D>> levels() const { return sim_.levels(); }
-  PassContext<D> context(const LevelSpan<D>& L) const { return sim_.pass_context(L); }
-  PassContext<D> context() const { return sim_.pass_context(sim_.levels().front()); }
+  PassContext<D> context(const LevelSpan<D>& L) const { return sim_.context(L); }
+  PassContext<D> context() const { return sim_.context(sim_.levels().front()); }
   // the lists of the current positions (rebuilt if some particle moved too far)
   void ensure_lists() { sim_.ensure_neighbours(); }
   // particles were created or removed: the lists (and with zones the roles) are redone
   void particles_changed() { sim_.invalidate_neighbours(); }
+  // the lists rebuilt now (with zones: `roles`, new roles); `may_rebalance`: several ranks
+  // may rebalance the decomposition after it
+  void rebuild_lists(bool roles, bool may_rebalance) { sim_.rebuild_lists(roles, may_rebalance); }
+  // the next global id of the first hook that hands ids out (the open boundaries), -1 if none
+  std::int64_t hooks_next_id() const {
+    for (const auto& h : sim_.hooks_)
+      if (h->next_id() >= 0) return h->next_id();
+    return -1;
+  }
   // the counter new particles take their global ids from where another part hands them out
   // too (the refinement's), or null
-  std::int64_t* shared_id_counter() { return sim_.apr_on_ ? &sim_.apr_.id_counter() : nullptr; }
+  std::int64_t* shared_id_counter() { return sim_.refinement_ ? &sim_.refinement_->apr().id_counter() : nullptr; }
   bool has_walls() const { return !sim_.walls_.empty(); }
   const WallModel<D>& walls() const { return sim_.walls_; }
   void update_walls(double t) { sim_.update_walls(t); }
-  void update_free_surface() { sim_.update_free_surface(); }
+  void update_free_surface() { ondine::update_free_surface(sim_); }
   // the hooks' `shifted` point, for the hook that shifts
   void shifted(const ShiftedState<D>& s) {
     for (auto& h : sim_.hooks_) h->shifted(*this, s);

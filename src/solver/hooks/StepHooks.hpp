@@ -8,6 +8,7 @@
 #include "solver/hooks/ImpermeabilityGuard.hpp"
 #include "solver/hooks/OpenBoundaryStep.hpp"
 #include "solver/hooks/ParticleShifting.hpp"
+#include "solver/hooks/Refinement.hpp"
 #include "solver/hooks/StartupDamping.hpp"
 #include "solver/hooks/TransportVelocity.hpp"
 
@@ -23,6 +24,8 @@ std::vector<std::unique_ptr<StepHook<D>>> make_step_hooks(const Scene& s, const 
   if (!s.open_boundaries.empty()) list.push_back(std::make_unique<OpenBoundaryStep<D>>(s, restart));
   else if (restart && restart->header.open.present)
     throw std::runtime_error("the checkpoint was written by a run with open boundaries; the case has none");
+  // last: its step start sorts what the others created or removed
+  if (!s.refinement_zones.empty()) list.push_back(std::make_unique<Refinement<D>>(s, restart));
   return list;
 }
 

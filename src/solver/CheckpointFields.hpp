@@ -1,0 +1,26 @@
+#pragma once
+// The fields a checkpoint carries (io/Checkpoint.hpp), for its writer and its reader.
+#include "particles/ParticleSet.hpp"
+
+namespace ondine {
+
+// f(tag) for each field a checkpoint carries: the state, the open boundaries' roles where
+// allocated, and with refinement zones the APR fields (level, role, mother flag and
+// mother's id of each particle)
+template <int D, class F>
+void for_each_checkpoint_field(const ParticleSet<D>& p, bool refinement, F&& f) {
+  f(field::Position{});
+  f(field::Velocity{});
+  f(field::Density{});
+  f(field::Mass{});
+  f(field::GlobalId{});
+  if (p.has(field::OpenRole{})) f(field::OpenRole{});
+  if (!refinement) return;
+  f(field::AprBirthLevel{});
+  f(field::AprLevel{});
+  f(field::AprGuard{});
+  f(field::AprMother{});
+  f(field::AprParent{});
+}
+
+}  // namespace ondine
