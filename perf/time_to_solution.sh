@@ -11,20 +11,29 @@
 # (Riemann-SPH of Leduc et al. with MUSCL, scheme.flux: riemann, at acoustic CFL 0.5 with the
 # gradients at every stage; the case's artificial viscosity kept). --schemes picks a subset.
 # With --dx3d, the 3D dam break (SPHERIC Test 2, cases/spheric_test2_3d.yaml, 2 s) at each
-# spacing, once per scheme ("defaults", and "fast": CFL 0.75 with the gradient once per step):
-# H2 and H4 RMS errors against the experiment, particle-steps/s and pair interactions/s.
+# spacing, alternating with the peer on the same geometry (../shared/peer/run_test2_3d.sh OUT DP,
+# its sensors by sensors_test2_3d.sh), RUNS3D times: peer, then each of --schemes3d ("defaults":
+# the case as shipped; "fast": CFL 0.75 with the density gradient once per step; "fast_exact": the
+# same with time.output_at: exact, every step cut to land on the 2 ms sensor instants). Both codes'
+# H2, H4 RMS errors, P1/P3 first-impact peaks and the P1 impulse over 0.35-0.60 s against the
+# measured series by one rule (perf/test2_metrics.py), the ratio of the medians of the wall times
+# (the peer's includes GenCase, Ondine's its set-up), particle-steps/s and pair interactions/s.
+# Widths "" skips the 2D part.
 # Writes perf/results/time-to-solution-<date>.json and .png.
 # usage: perf/time_to_solution.sh [--widths "25 50 100"] [--runs 3] [--schemes "defaults cfl0.75 case riemann"]
-#                                 [--dx3d "0.06 0.045"] [--out perf/results]
+#                                 [--dx3d "0.04 0.03"] [--runs3d 1] [--schemes3d "fast"] [--out perf/results]
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 widths="25 50 100"; runs=3; dx3d=""; out="$here/perf/results"; schemes_asked="defaults cfl0.75 case riemann"
+runs3d=1; schemes3d="fast"
 while [ $# -gt 0 ]; do
   case $1 in
     --widths) widths=$2; shift 2 ;;
     --runs) runs=$2; shift 2 ;;
     --dx3d) dx3d=$2; shift 2 ;;
     --schemes) schemes_asked=$2; shift 2 ;;
+    --runs3d) runs3d=$2; shift 2 ;;
+    --schemes3d) schemes3d=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     *) echo "perf/time_to_solution.sh: unknown option $1 (see the header of the script)" >&2; exit 2 ;;
   esac
@@ -93,25 +102,48 @@ PY
     done
   done
 done
-declare -A sets3=([defaults]="" [fast]="--set scheme.cfl.acoustic=0.75 --set scheme.density_gradient=step")
+declare -A sets3=([defaults]="" [fast]="--set scheme.cfl.acoustic=0.75 --set scheme.density_gradient=step"
+                  [fast_exact]="--set scheme.cfl.acoustic=0.75 --set scheme.density_gradient=step --set time.output_at=exact")
+for s in $schemes3d; do
+  [ -n "${sets3[$s]+x}" ] || { echo "perf/time_to_solution.sh: unknown scheme '$s' in --schemes3d (expected some of: ${!sets3[*]})" >&2; exit 2; }
+done
+measured="$here/cases/reference/spheric_test2_kleefsman2005.csv"
 for d3 in $dx3d; do
-  for s in defaults fast; do
-    # shellcheck disable=SC2086
-    "$ondine" run "$here/cases/spheric_test2_3d.yaml" --out "$work/3d_$s" --quiet --set discretisation.dx="$d3" ${sets3[$s]} > /dev/null 2>&1
-    "$py" - "$work/3d_$s" "$s" "$d3" >> "$work/runs" <<'PY'
-import json, sys
-d, scheme, dx = sys.argv[1:4]
+  for r in $(seq "$runs3d"); do
+    if [ -x "$peer/run_test2_3d.sh" ]; then
+      t0=$(date +%s.%N)
+      "$peer/run_test2_3d.sh" "$work/peer3d" "$d3" > /dev/null
+      t1=$(date +%s.%N)
+      "$peer/sensors_test2_3d.sh" "$work/peer3d" > /dev/null
+      "$py" - "$work/peer3d" "$d3" "$r" "$("$py" -c "print($t1 - $t0)")" "$measured" "$here/perf/test2_metrics.py" >> "$work/runs" <<'PY'
+import json, re, subprocess, sys
+d, dx, r, wall, ref, metrics = sys.argv[1:7]
+f = json.loads(subprocess.run([sys.executable, metrics, "peer", d, ref], check=True, capture_output=True, text=True).stdout)
+log = open(d + "/gencase.log").read()
+total = int(re.search(r"Total particles: (\d+)", log).group(1))
+bound = int(re.search(r"bound=(\d+)", log).group(1))
+steps = re.search(r"Steps per second[. :]*([0-9.eE+-]+)", open(d + "/run.log").read())
+print(json.dumps({"code": "peer", "case": "spheric_test2_3d", "scheme": "DualSPHysics 5.4 CPU", "dx": float(dx), "run": int(r),
+                  "wall_seconds": float(wall), "particles": total, "wall_particles": bound, **f}))
+PY
+    fi
+    for s in $schemes3d; do
+      # shellcheck disable=SC2086
+      "$ondine" run "$here/cases/spheric_test2_3d.yaml" --out "$work/3d_$s" --quiet --set discretisation.dx="$d3" ${sets3[$s]} > /dev/null 2>&1
+      "$py" - "$work/3d_$s" "$s" "$d3" "$r" "$measured" "$here/perf/test2_metrics.py" >> "$work/runs" <<'PY'
+import json, subprocess, sys
+d, scheme, dx, r, ref, metrics = sys.argv[1:7]
+f = json.loads(subprocess.run([sys.executable, metrics, "ondine", d, ref], check=True, capture_output=True, text=True).stdout)
 s = json.load(open(d + "/summary.json"))
-e = s.get("errors", {})
 evals = 4 * s["total_steps"]
-print(json.dumps({"code": "ondine", "case": "spheric_test2_3d", "scheme": scheme, "dx": float(dx), "run": 1,
+print(json.dumps({"code": "ondine", "case": "spheric_test2_3d", "scheme": scheme, "dx": float(dx), "run": int(r),
                   "wall_seconds": s["wall_seconds"], "loop_seconds": s["loop_seconds"], "steps": s["total_steps"],
                   "particles": s["particles"], "mean_neighbours": s.get("mean_neighbours", 0.0),
                   "particle_steps_per_second": s["particles"] * s["total_steps"] / s["loop_seconds"],
                   "flux_pairs_per_second": s["particles"] * s.get("mean_neighbours", 0.0) * evals / s["loop_seconds"],
-                  "neighbour_pair_passes_per_step": 5 if scheme == "fast" else 8,
-                  "H2_rms_error": e.get("H2_rms_error"), "H4_rms_error": e.get("H4_rms_error")}))
+                  "neighbour_pair_passes_per_step": 8 if scheme == "defaults" else 5, **f}))
 PY
+    done
   done
 done
 "$py" - "$work/runs" "$work/pairbench" "$out/time-to-solution-$stamp" <<'PY'
@@ -139,11 +171,24 @@ for row in table:
     if peer and row["code"] == "ondine":
         row["time_over_peer"] = row["wall_seconds_median"] / peer[0]["wall_seconds_median"]
 for r in runs3:
-    if yard:
+    if yard and r["code"] == "ondine":
         r["flux_pair_rate_over_yardstick"] = r["flux_pairs_per_second"] / statistics.median(yard)
+groups3 = {}
+for r in runs3:
+    groups3.setdefault((r["dx"], r["code"], r["scheme"]), []).append(r)
+table3 = []
+figs = ("H2_rms_error", "H4_rms_error", "P1_peak", "P1_peak_time", "P3_peak", "P1_impulse", "P1_impulse_relative_error", "steps", "particles")
+for (dx, code, scheme), rs in sorted(groups3.items(), key=lambda g: (-g[0][0], g[0][1] != "peer", g[0][2])):
+    row = {"dx": dx, "code": code, "scheme": scheme, "runs": len(rs), "wall_seconds": [x["wall_seconds"] for x in rs],
+           "wall_seconds_median": statistics.median(x["wall_seconds"] for x in rs)}
+    row.update({k: rs[0][k] for k in figs if k in rs[0]})
+    peer = [x["wall_seconds"] for x in runs3 if x["dx"] == dx and x["code"] == "peer"]
+    if peer and code == "ondine":
+        row["time_over_peer"] = row["wall_seconds_median"] / statistics.median(peer)
+    table3.append(row)
 json.dump({"yardstick_pairs_per_second_median": statistics.median(yard) if yard else None, "summary": table, "runs": runs,
-           "spheric_test2_3d": runs3}, open(stem + ".json", "w"), indent=1)
-for row in table + runs3:
+           "spheric_test2_3d_summary": table3, "spheric_test2_3d": runs3}, open(stem + ".json", "w"), indent=1)
+for row in table + table3:
     print(json.dumps(row))
 try:
     import matplotlib
@@ -166,12 +211,12 @@ try:
     ax.legend(fontsize=7)
     if runs3:
         ax = axes[0][1]
-        for scheme in sorted({r["scheme"] for r in runs3}):
+        for scheme in sorted({r["scheme"] for r in table3}):
             for h, mk in (("H2", "o-"), ("H4", "^:")):
-                pts = sorted((r["wall_seconds"], r[h + "_rms_error"]) for r in runs3 if r["scheme"] == scheme and r[h + "_rms_error"])
+                pts = sorted((r["wall_seconds_median"], r[h + "_rms_error"]) for r in table3 if r["scheme"] == scheme and r.get(h + "_rms_error"))
                 if pts:
-                    ax.loglog(*zip(*pts), mk, label="%s %s" % (scheme, h))
-        ax.set_xlabel("wall time (s), one run, 2 threads")
+                    ax.loglog(*zip(*pts), mk, label="%s %s" % ("DualSPHysics" if "Dual" in scheme else "Ondine " + scheme, h))
+        ax.set_xlabel("wall time (s), median, 2 threads")
         ax.set_ylabel("RMS error / initial height")
         ax.set_title("SPHERIC Test 2 (3D dam break), dx = " + ", ".join(sorted({"%g" % r["dx"] for r in runs3})), fontsize=9)
         ax.grid(True, which="both", alpha=0.3)

@@ -249,7 +249,8 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
   while (report.status == "completed" && sim.time() < scene.duration * (1 - 1e-12)) {
     const double next_output = std::min(scene.duration, output_index * scene.output_interval);
     try {
-      last_dt = sim.step(next_output);
+      // time.output_at: next_step: the step is shortened only to end the run on time
+      last_dt = sim.step(scene.output_at_next_step ? scene.duration : next_output);
     } catch (const BlowUp& e) {
       // the particles hold the state at the start of the failed step: write it
       if (root) std::fprintf(stderr, "ondine: %s; the last good state (t = %g s) is the last snapshot\n", e.what(), sim.time());
@@ -264,9 +265,13 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
       break;
     }
     if (sim.time() >= next_output * (1 - 1e-12)) {
-      // a snapshot at every snapshot_every-th output instant and at the end
-      const bool snapshot = output_index % scene.snapshot_every == 0 || sim.time() >= scene.duration * (1 - 1e-12);
-      ++output_index;
+      // a snapshot at every snapshot_every-th output instant and at the end; with output_at:
+      // next_step a step may pass several instants: one output for them all, at its time
+      bool snapshot = sim.time() >= scene.duration * (1 - 1e-12);
+      do {
+        snapshot = snapshot || output_index % scene.snapshot_every == 0;
+        ++output_index;
+      } while (output_index * scene.output_interval <= sim.time() * (1 + 1e-12));
       if (!recorder.record(sim, last_dt, snapshot).finite) {
         report.status = "diverged";
         break;

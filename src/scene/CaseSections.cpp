@@ -249,11 +249,12 @@ void read_sound_speed(const Reader& r, YAML::Node& root, Scene& s) {
 
 void read_time(const Reader& r, YAML::Node& root, Scene& s) {
   const YAML::Node t = r.required(root, "", "time");
-  r.only_keys(t, "time", {"duration", "output_interval", "snapshot_every", "max_steps", "damping"});
+  r.only_keys(t, "time", {"duration", "output_interval", "output_at", "snapshot_every", "max_steps", "damping"});
   s.duration = r.positive(r.required(t, "time", "duration"), "time.duration", " (s)");
   s.output_interval = r.positive(r.required(t, "time", "output_interval"), "time.output_interval", " (s)");
   if (t["damping"]) s.damping_time = r.non_negative(t["damping"], "time.damping", " (s)");
   if (t["max_steps"]) s.max_steps = r.integer(t["max_steps"], "time.max_steps", 1, 1LL << 50);
+  if (t["output_at"]) s.output_at_next_step = r.word(t["output_at"], "time.output_at", {"exact", "next_step"}) == "next_step";
   if (t["snapshot_every"]) s.snapshot_every = static_cast<int>(r.integer(t["snapshot_every"], "time.snapshot_every", 1, 1000000));
 }
 

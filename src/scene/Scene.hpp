@@ -208,6 +208,10 @@ struct Scene {
   double duration = 0.0;         // s
   double output_interval = 0.0;  // s: the time series (probes, gauges, walls, diagnostics)
   int snapshot_every = 1;        // a snapshot at every n-th output instant (and the last)
+  // time.output_at: next_step: an output at the end of the first step at or past each instant,
+  // at that step's time, the step never shortened for it (but at the end); exact (false): the
+  // step shortened to land on each instant
+  bool output_at_next_step = false;
   std::int64_t max_steps = -1;   // -1: no limit
   double damping_time = 0;       // s: initial relaxation, u *= exp(-dt / (damping_time / 10)) while t < damping_time
   std::vector<Probe> probes;

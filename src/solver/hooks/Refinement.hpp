@@ -21,7 +21,7 @@ namespace ondine {
 template <int D>
 class Refinement final : public StepHook<D> {
  public:
-  Refinement(const Scene& s, const CheckpointSlice* restart) {
+  Refinement(const Scene&, const CheckpointSlice* restart) {
     if (restart && !restart->header.refinement.present)
       throw std::logic_error("Simulation<D>: a checkpoint without the APR state for a scene with refinement zones");
   }
