@@ -34,7 +34,8 @@ class RunRecorder {
   // (d.finite false: the state is no longer finite).
   // snapshot false: the series only (time.snapshot_every > 1).
   Diagnostics record(Simulation<D>& sim, double last_dt, bool snapshot = true) {
-    const OutputFrame<D> frame(sim);  // until the end of this call
+    // until the end of this call; the free-surface flags only for a snapshot (no series reads them)
+    const OutputFrame<D> frame(sim, snapshot);
     if (snapshot) snapshots_.write(sim.particles(), sim.time(), sim.steps(), static_cast<std::int64_t>(sim.size()));
     OutputInstant<D> now{sim, last_dt};
     for (const auto& o : observers_) o->record(now);

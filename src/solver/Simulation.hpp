@@ -163,8 +163,9 @@ template <int D>
 class OutputFrame {
  public:
   // before the output: pressure from the EOS, the walls and their Shepard factor at time t,
-  // the free surface; with refinement zones every guard interpolated from the stored state
-  explicit OutputFrame(Simulation<D>& sim);
+  // the free surface (flags false: not the free-surface flags, which only a snapshot writes);
+  // with refinement zones every guard interpolated from the stored state
+  explicit OutputFrame(Simulation<D>& sim, bool flags = true);
   // after it: puts back what the frame changed that the next step reads (with zones the
   // guards' velocity, density and density gradient), so that an output, a checkpoint or a
   // restart does not change the run
@@ -176,10 +177,11 @@ class OutputFrame {
   Simulation<D>& sim_;
 };
 
-// The free-surface flag (4.86-4.87) into field::FreeSurface and the walls' Shepard factor, at
-// the stored state (solver/SimulationOutput.hpp); at output times, and after shifting.
+// The free-surface flag (4.86-4.87) into field::FreeSurface (flags false: not it) and the walls'
+// Shepard factor, at the stored state (solver/SimulationOutput.hpp); at output times, and after
+// shifting.
 template <int D>
-void update_free_surface(Simulation<D>& sim);
+void update_free_surface(Simulation<D>& sim, bool flags = true);
 
 extern template class Simulation<2>;
 extern template class Simulation<3>;

@@ -13,7 +13,7 @@
 namespace ondine {
 
 template <int D>
-OutputFrame<D>::OutputFrame(Simulation<D>& sim) : sim_(sim) {
+OutputFrame<D>::OutputFrame(Simulation<D>& sim, bool flags) : sim_(sim) {
   StepState<D> s(sim);
   ParticleSet<D>& p = s.particles();
   // several ranks: owned positions are wrapped into the periodic box only at
@@ -30,7 +30,7 @@ OutputFrame<D>::OutputFrame(Simulation<D>& sim) : sim_(sim) {
     update_pressure<D>(eos, p.get(field::Density{}), p.get(field::Pressure{}), n);
   });
   if (s.has_walls()) s.update_walls(s.time());
-  update_free_surface(sim);
+  update_free_surface(sim, flags);
 }
 
 template <int D>
@@ -38,13 +38,14 @@ OutputFrame<D>::~OutputFrame() {
   if (sim_.refinement_) sim_.refinement_->restore_after_output(sim_.p_);
 }
 
-// The free-surface flag (4.86-4.87) of each level's SPH particles, and the Shepard factor
-// of the walls at the stored state (guards included; a guard is no SPH particle: no flag).
+// The free-surface flag (4.86-4.87) of each level's SPH particles (flags: when asked), and
+// the Shepard factor of the walls at the stored state (guards included; a guard is no SPH
+// particle: no flag).
 template <int D>
-void update_free_surface(Simulation<D>& sim) {
+void update_free_surface(Simulation<D>& sim, bool flags_asked) {
   StepState<D> s(sim);
   ParticleSet<D>& p = s.particles();
-  const bool flags = p.has(field::FreeSurface{});
+  const bool flags = flags_asked && p.has(field::FreeSurface{});
   const bool walls = s.has_walls();
   if (flags) {
     s.ensure_lists();
