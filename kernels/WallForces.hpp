@@ -27,7 +27,6 @@ struct WallTraction {
   CellList<D> cells;  // particle cell list
   Kernel W;
   double R2, nu, rho0;
-  WallEos eos;
   double min_dn;
   PeriodicBox<D> box;
   field_view_t<field::Position, D> x;
@@ -42,6 +41,7 @@ struct WallTraction {
   field_view_t<field::AprBirthLevel, D> birth = {};
   field_view_t<field::AprGuard, D> guard = {};
   bool velocity_muscl = false;  // scheme.wall_velocity_reconstruction
+  Kokkos::View<double*, MemSpace> c2;  // c_i^2 = eos.c2(rho_i) of each particle (ParticleSoundSpeed2), once per call
 
   // <grad u>_i of the velocity's MUSCL state (4.30), over the particles within R_i of i
   // (same birth level, SPH or guard, with refinement zones: i's own L. list)
@@ -80,11 +80,11 @@ struct WallTraction {
         Wr = W.value(r);
       }
       const double w = m(i) / rho_i * Wr;
-      const double c2 = eos.c2(rho_i);
+      const double c2_i = c2(i);
       const Vec<D> ui = load<D>(u, i);
       const double un = velocity_muscl ? wall_normal_velocity<D>(velocity_gradient(i, load<D>(x, i), ui), xiq, ui, uq, n)
                                        : dot(ui - uq, n);
-      sp += w * normal_flux_pressure<D>(rho_i, P(i), c2, kmath::sqrt(c2), load<D>(grad_rho, i), xiq, un);
+      sp += w * normal_flux_pressure<D>(rho_i, P(i), c2_i, kmath::sqrt(c2_i), load<D>(grad_rho, i), xiq, un);
       sv += (-w / fluid_side_dn<D>(xiq, n, dn_min)) * (ui - uq);
       sw += w;
     });
@@ -94,6 +94,16 @@ struct WallTraction {
       traction(q, D + k) = (sw > 0 && wall.no_slip(q)) ? s * rho0 * nu * sv[k] / sw : 0.0;
     }
   }
+};
+
+// c_i^2 of every particle for WallTraction: the equation of state's power law once per
+// particle, not once per wall point around it
+template <int D>
+struct ParticleSoundSpeed2 {
+  WallEos eos;
+  field_view_t<field::Density, D> rho;
+  Kokkos::View<double*, MemSpace> c2;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { c2(i) = eos.c2(rho(i)); }
 };
 
 // sum over the points of one wall of one traction component

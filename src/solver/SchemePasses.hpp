@@ -158,14 +158,18 @@ void open_samples(const PassContext<D>& c, const Kokkos::View<double* [D], Kokko
 template <int D, class K, bool Levels>
 void wall_traction(const PassContext<D>& c, const Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace>& traction) {
   const auto policy = Kokkos::RangePolicy<ExecSpace>(0, c.wall.count);
+  // every particle the cell list can hold, halos included
+  const int n = static_cast<int>(c.rho.extent(0));
+  Kokkos::View<double*, MemSpace> c2(Kokkos::view_alloc(Kokkos::WithoutInitializing, "ondine::NFM::c2"), n);
+  Kokkos::parallel_for("ondine::NFM::sound_speed", Kokkos::RangePolicy<ExecSpace>(0, n), ParticleSoundSpeed2<D>{c.eos, c.rho, c2});
   if constexpr (Levels)
     Kokkos::parallel_for("ondine::NFM::wall_traction", policy,
-                         WallTraction<D, K, true>{c.wall, c.cells, K(1.0), c.R * c.R, c.nu, c.rho0, c.eos, 0.05 * c.R, c.box, c.x, c.u,
-                                                  c.rho, c.P, c.m, c.grad_rho, traction, c.zones, c.birth, c.guard, c.velocity_muscl});
+                         WallTraction<D, K, true>{c.wall, c.cells, K(1.0), c.R * c.R, c.nu, c.rho0, 0.05 * c.R, c.box, c.x, c.u,
+                                                  c.rho, c.P, c.m, c.grad_rho, traction, c.zones, c.birth, c.guard, c.velocity_muscl, c2});
   else
     Kokkos::parallel_for("ondine::NFM::wall_traction", policy,
-                         WallTraction<D, K>{c.wall, c.cells, K(c.R), c.R * c.R, c.nu, c.rho0, c.eos, 0.05 * c.R, c.box, c.x, c.u, c.rho,
-                                            c.P, c.m, c.grad_rho, traction, {}, {}, {}, c.velocity_muscl});
+                         WallTraction<D, K>{c.wall, c.cells, K(c.R), c.R * c.R, c.nu, c.rho0, 0.05 * c.R, c.box, c.x, c.u, c.rho,
+                                            c.P, c.m, c.grad_rho, traction, {}, {}, {}, c.velocity_muscl, c2});
 }
 
 // the guard spacing shifts of one level's guards (kernels/apr/GuardSpacing.hpp)
