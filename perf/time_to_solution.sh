@@ -194,23 +194,25 @@ try:
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, 2 if runs3 else 1, figsize=(11 if runs3 else 5.5, 4), squeeze=False)
-    ax = axes[0][0]
-    for scheme in sorted({r["scheme"] for r in table if r["code"] == "ondine"}):
-        pts = sorted((r["wall_seconds_median"], r["front_rms_error"]) for r in table if r["scheme"] == scheme)
-        ax.loglog(*zip(*pts), "o-", label="Ondine " + scheme)
-    # the peer's front error at a/50, a/100 (its README; its output is not read here)
-    peer_err = {50: 0.120, 100: 0.132, 200: 0.138}
-    pts = sorted((r["wall_seconds_median"], peer_err[r["width"]]) for r in table if r["code"] == "peer" and r["width"] in peer_err)
-    if pts:
-        ax.loglog(*zip(*pts), "s--", label="DualSPHysics 5.4 CPU (error from its README)")
-    ax.set_xlabel("wall time (s), median, 2 threads")
-    ax.set_ylabel("front RMS error vs Martin & Moyce")
-    ax.set_title("2D dam break: error against time" + (" (pairbench %.3g pairs/s)" % statistics.median(yard) if yard else ""), fontsize=9)
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7)
+    panels = (1 if table else 0) + (1 if runs3 else 0)
+    fig, axes = plt.subplots(1, panels, figsize=(5.5 * panels, 4), squeeze=False)
+    if table:
+        ax = axes[0][0]
+        for scheme in sorted({r["scheme"] for r in table if r["code"] == "ondine"}):
+            pts = sorted((r["wall_seconds_median"], r["front_rms_error"]) for r in table if r["scheme"] == scheme)
+            ax.loglog(*zip(*pts), "o-", label="Ondine " + scheme)
+        # the peer's front error at a/50, a/100 (its README; its output is not read here)
+        peer_err = {50: 0.120, 100: 0.132, 200: 0.138}
+        pts = sorted((r["wall_seconds_median"], peer_err[r["width"]]) for r in table if r["code"] == "peer" and r["width"] in peer_err)
+        if pts:
+            ax.loglog(*zip(*pts), "s--", label="DualSPHysics 5.4 CPU (error from its README)")
+        ax.set_xlabel("wall time (s), median, 2 threads")
+        ax.set_ylabel("front RMS error vs Martin & Moyce")
+        ax.set_title("2D dam break: error against time" + (" (pairbench %.3g pairs/s)" % statistics.median(yard) if yard else ""), fontsize=9)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
     if runs3:
-        ax = axes[0][1]
+        ax = axes[0][panels - 1]
         for scheme in sorted({r["scheme"] for r in table3}):
             for h, mk in (("H2", "o-"), ("H4", "^:")):
                 pts = sorted((r["wall_seconds_median"], r[h + "_rms_error"]) for r in table3 if r["scheme"] == scheme and r.get(h + "_rms_error"))
@@ -218,7 +220,8 @@ try:
                     ax.loglog(*zip(*pts), mk, label="%s %s" % ("DualSPHysics" if "Dual" in scheme else "Ondine " + scheme, h))
         ax.set_xlabel("wall time (s), median, 2 threads")
         ax.set_ylabel("RMS error / initial height")
-        ax.set_title("SPHERIC Test 2 (3D dam break), dx = " + ", ".join(sorted({"%g" % r["dx"] for r in runs3})), fontsize=9)
+        ax.set_title("SPHERIC Test 2 (3D dam break), dx = " + ", ".join(sorted({"%g" % r["dx"] for r in runs3})) +
+                     (" (pairbench %.3g pairs/s)" % statistics.median(yard) if yard else ""), fontsize=9)
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7)
     fig.tight_layout()
