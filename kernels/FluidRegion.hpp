@@ -1,7 +1,7 @@
 #pragma once
 // Which lattice points of the initial fill lie in the fluid: on the fluid side
 // of every closed wall (inside a tank, outside a body; crossing-number test in 2D,
-// winding number in 3D) and at least `clearance` from every wall facet (dx/2 unless
+// winding number in 3D), not just behind a facet of an open wall, and at least `clearance` from every wall facet (dx/2 unless
 // the block's wall_clearance says otherwise). Also the impermeability
 // diagnostic: particles closer than 0.1 dx to a wall or on its solid side.
 #include "kernels/WallSet.hpp"
@@ -30,7 +30,10 @@ struct FluidRegion {
       if (out) return;
       const Facet<D> f = facets(s);
       if (facet_distance2<D>(ps, f) < clearance * clearance) out = true;
-      // behind a facet (its solid side), less than `behind` from it: crossed (open walls too)
+      // behind a facet of an open wall (its solid side), less than `behind` from it: crossed.
+      // A closed wall's side is the exact test below: the depth test would take the fluid beside
+      // a body part thinner than `behind` (an acute tip) for fluid behind its far face.
+      if (in_closed_wall(s)) return;
       const double dn = facet_signed_distance<D>(ps, f);
       if (dn < 0 && dn > -behind && facet_spans<D>(ps, f)) out = true;
     });
@@ -38,6 +41,12 @@ struct FluidRegion {
     for (int w = 0; w < closed.walls; ++w)
       if (inside_closed(p, w) != (closed.fluid_inside(w) == 1)) return false;
     return true;
+  }
+
+  KOKKOS_INLINE_FUNCTION bool in_closed_wall(const int s) const {
+    for (int w = 0; w < closed.walls; ++w)
+      if (s >= closed.first(w) && s < closed.first(w) + closed.count(w)) return true;
+    return false;
   }
 
   // p inside closed wall w: the crossing number of its polygon (2D), its winding number (3D)

@@ -36,6 +36,61 @@ TEST_CASE("The fill leaves no particle inside a wall or closer than dx/2 to one"
   CHECK(body.size() == 2000 - 75);
 }
 
+TEST_CASE("The star's fill and crossing count: fluid beside an acute tip is fluid", "[nfm][fill]") {
+  // cases/star_body_2d.yaml at dx = 0.02: its 46-degree tips are narrower than dx over their
+  // last 0.025 m, so a point beside one face lies within dx behind the other. Only the exact
+  // side test (crossing number) may decide for a closed wall.
+  Simulation<2> sim(load_case(src + "/cases/star_body_2d.yaml", {"discretisation.dx=0.02"}));
+  const Scene& scene = sim.scene();
+  const auto& star = scene.walls[1].points;
+  auto in_star = [&](double x, double y) {
+    bool in = false;
+    for (std::size_t i = 0, j = star.size() - 1; i < star.size(); j = i++)
+      if ((star[i][1] > y) != (star[j][1] > y) &&
+          x < (star[j][0] - star[i][0]) * (y - star[i][1]) / (star[j][1] - star[i][1]) + star[i][0])
+        in = !in;
+    return in;
+  };
+  auto distance = [&](double x, double y) {
+    double d = 1e9;
+    for (std::size_t i = 0; i < star.size(); ++i) {
+      const auto& a = star[i];
+      const auto& b = star[(i + 1) % star.size()];
+      const double tx = b[0] - a[0], ty = b[1] - a[1];
+      const double s = std::clamp(((x - a[0]) * tx + (y - a[1]) * ty) / (tx * tx + ty * ty), 0.0, 1.0);
+      d = std::min(d, std::hypot(x - a[0] - s * tx, y - a[1] - s * ty));
+    }
+    return d;
+  };
+  // the fill against brute force: every lattice point of the tank outside the star, dx/2 from it
+  const double dx = scene.dx;
+  std::size_t expected = 0;
+  for (int i = 0; i < 50; ++i)
+    for (int j = 0; j < 50; ++j) {
+      const double x = (i + 0.5) * dx, y = (j + 0.5) * dx;
+      if (!in_star(x, y) && distance(x, y) >= 0.5 * dx) ++expected;
+    }
+  CHECK(sim.size() == expected);
+  CHECK(wall_leaks(sim, 0.0) == 0);
+  // three particles moved next to the top tip (0.5, 0.65): beside its right face (fluid); on
+  // the tip's axis inside it (crossed); 0.05 dx above it (fluid, within 0.1 dx of a wall)
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::Position{}));
+  // the right face runs from vertex 9 to the tip, vertex 0; an eighth of the way from the tip the
+  // arm is 0.46 dx across, and the point 0.3 dx off the right face is 0.67 dx behind the left one
+  const auto &tip = star[0], &base = star[9];
+  const double L = std::hypot(base[0] - tip[0], base[1] - tip[1]);
+  const double nx = (tip[1] - base[1]) / L, ny = (base[0] - tip[0]) / L;  // outward normal of the face
+  const double px = tip[0] + 0.125 * (base[0] - tip[0]) + 0.3 * dx * nx, py = tip[1] + 0.125 * (base[1] - tip[1]) + 0.3 * dx * ny;
+  REQUIRE(!in_star(px, py));
+  REQUIRE(distance(px, py) == Approx(0.3 * dx));
+  x(0, 0) = px, x(0, 1) = py;
+  x(1, 0) = 0.5, x(1, 1) = 0.64;
+  x(2, 0) = 0.5, x(2, 1) = 0.65 + 0.05 * dx;
+  Kokkos::deep_copy(sim.particles().get(field::Position{}), x);
+  CHECK(wall_leaks(sim, 0.0) == 1);
+  CHECK(wall_leaks(sim) == 2);  // and the one 0.1 dx above the tip
+}
+
 TEST_CASE("fluid_blocks[i].wall_clearance keeps lattice points 0.01 dx from the walls and in the corners", "[nfm][fill]") {
   const Scene scene = load_case(src + "/cases/near_wall_start_2d.yaml");
   Simulation<2> sim(scene);

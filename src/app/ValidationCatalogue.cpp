@@ -36,6 +36,11 @@ const std::vector<ValidationCase>& catalogue() {
       // and at dx = 0.04 the radius 0.12 m spans them: buoyancy_error 0.67, not a rung)
       {"immersed_body_2d", "cases/polygon_body_2d.yaml", 0.2, {{0.02, false}, {0.01, false}, {0.005, true}},
        {{"buoyancy_error", 0.03}, {"wall_leaks", 0.5}}, {}, {}, {"pressure_linf"}},
+      // The thesis' star (4.6.1, cases/star_body_2d.yaml: closed full tank, c0 = 40 m/s, R/dx = 4,
+      // walls across the lattice, acute tips and arms narrower than the support) with the
+      // wall-aware shifting: the thesis reports -1.6 % at dx = 0.01; the bound 2 %
+      {"star_body_2d", "cases/star_body_2d.yaml", 0.3, {{0.02, false}, {0.01, true}},
+       {{"buoyancy_error", 0.02}, {"wall_leaks", 0.5}}, {}, {}, {"pressure_linf"}},
       // 3D NFM walls. Laminar square duct (side L = 1 m, Re = 7.4) against the start-up series at
       // t = 3 s: measured 6.9e-3, 2.3e-3, 1.0e-3 at L/10, L/15, L/20 (order 2.7, 2.8); the bound
       // is a regression guard
@@ -106,6 +111,11 @@ const std::vector<ValidationCase>& catalogue() {
       {"stability_hydrostatic_20s", "cases/hydrostatic_tank_2d.yaml", 0.5, {{0.05, true}, {0.025, true}},
        stable({{"max_kinetic_energy_ratio", 0.01}, {"mass_drift", 1e-12}, {"wall_leaks", 0.5}, {"kinetic_over_potential", 1e-3}}),
        {"time.duration=20", "time.output_interval=0.1"}},
+      // The star without shifting (Lagrangian from the Cartesian start): stable, but the lattice cut
+      // by walls across it relaxes into a packed layer along them whose excess pressure grows with
+      // the depth; its buoyancy error is shown, not bounded (docs/validation.md)
+      {"stability_star_body_lagrangian", "cases/star_body_2d.yaml", 0.3, {{0.02, false}, {0.01, true}},
+       stable({{"wall_crossings", 0.5}}), {"scheme.transport=lagrangian"}, {}, {"buoyancy_error", "pressure_linf", "wall_leaks"}},
       // still water whose particles start 0.01 dx from the left wall, the right wall and the floor, two of
       // them 0.01 dx from both walls of a corner (fluid_blocks[0].wall_clearance = 0.01), 1 s undamped:
       // no particle may end behind a wall (wall_crossings), E_k as the still tanks. Particles that start
