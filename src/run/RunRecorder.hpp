@@ -1,5 +1,6 @@
 #pragma once
-// What a run writes at each output instant: the snapshot (HDF5 + XDMF) and the rows of its
+// What a run writes at each output instant: the snapshot (HDF5 + XDMF), with walls the load on
+// them point by point beside it (io/WallFieldWriter.hpp), and the rows of its
 // observers (observers/Observers.hpp: diagnostics.csv, probes.csv, walls.csv, front.csv,
 // waves.csv, open.csv), which also keep the figures over the whole run. A restarted run takes
 // back the rows of the earlier run up to the restart time. Collective; rank 0 writes the text files.
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "io/SnapshotWriter.hpp"
+#include "io/WallFieldWriter.hpp"
 #include "observers/Observers.hpp"
 #include "solver/Simulation.hpp"
 
@@ -18,14 +20,20 @@ template <int D>
 class RunRecorder {
  public:
   RunRecorder(const Scene& scene, const std::string& out_dir, const Communicator& comm, Simulation<D>& sim)
-      : snapshots_(out_dir, scene.name, comm), observers_(make_observers<D>(scene, out_dir, comm.rank() == 0, sim)) {}
+      : snapshots_(out_dir, scene.name, comm),
+        wall_field_(out_dir, scene.name, comm),
+        observers_(make_observers<D>(scene, out_dir, comm.rank() == 0, sim)) {}
 
   // a new run: no snapshot of an earlier run with this name is left in the folder
-  void start() { snapshots_.remove_from(0); }
+  void start() {
+    snapshots_.remove_from(0);
+    wall_field_.remove_from(0);
+  }
 
   // a restart at t_start: the series of the earlier run up to it, and the figures over them
   void resume(double t_start, std::size_t snapshots) {
     snapshots_.resume(snapshots);
+    wall_field_.resume(snapshots);
     ResumedRows rows;
     for (const auto& o : observers_) o->resume(t_start, rows);
   }
@@ -37,6 +45,7 @@ class RunRecorder {
     // until the end of this call; the free-surface flags only for a snapshot (no series reads them)
     const OutputFrame<D> frame(sim, snapshot);
     if (snapshot) snapshots_.write(sim.particles(), sim.time(), sim.steps(), static_cast<std::int64_t>(sim.size()));
+    if (snapshot && !sim.walls().empty()) wall_field_.write(wall_load_field(sim), sim.time(), sim.steps());
     OutputInstant<D> now{sim, last_dt};
     for (const auto& o : observers_) o->record(now);
     return now.diagnostics();
@@ -60,6 +69,7 @@ class RunRecorder {
 
  private:
   SnapshotWriter snapshots_;
+  WallFieldWriter wall_field_;
   std::vector<std::unique_ptr<Observer<D>>> observers_;
 };
 

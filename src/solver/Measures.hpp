@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/Checkpoint.hpp"
+#include "io/WallFieldWriter.hpp"
 #include "scene/Scene.hpp"
 
 namespace ondine {
@@ -62,10 +63,12 @@ std::vector<double> wave_elevations(Simulation<D>& sim);
 // x of the leading edge of the fluid (max x + dx/2), for the dam-break front
 template <int D>
 double front_position(const Simulation<D>& sim);
-// measures/WallLoads.hpp: the force and moment on each wall; the particles on the solid
+// measures/WallLoads.hpp: the force and moment on each wall, the load point by point; the particles on the solid
 // side of a wall or closer than `clearance` (0.1 dx where negative) to one
 template <int D>
 std::vector<WallForce> wall_forces(Simulation<D>& sim);
+template <int D>
+WallLoadField wall_load_field(Simulation<D>& sim);
 template <int D>
 std::int64_t wall_leaks(const Simulation<D>& sim, double clearance = -1);
 // measures/Counts.hpp: particles of all ranks; SPH particles (guards excluded) on this

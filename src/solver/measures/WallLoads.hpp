@@ -8,25 +8,31 @@
 
 namespace ondine {
 
+// The traction of every wall point (kernels/WallForces.hpp: pressure force, viscous force, s_q
+// included) and whether this rank counts the point: on several ranks the rank that owns its
+// cell (its support is complete there: owned particles and halos)
 template <int D>
-std::vector<WallForce> wall_forces(Simulation<D>& sim) {
+struct WallTractions {
+  Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace> traction;
+  Kokkos::View<int*, MemSpace> counted;
+};
+
+template <int D>
+WallTractions<D> wall_tractions(Simulation<D>& sim) {
   const Scene& scene = sim.scene();
   const WallModel<D>& walls = sim.walls();
-  std::vector<WallForce> out;
-  if (walls.empty()) return out;
   StepState<D> state(sim);
   state.ensure_lists();  // the particle cell list is current
   state.domain().refresh_state_halos(state.particles());
   const int nq = walls.points().count;
   const double nu = scene.viscous_term != ViscousTerm::None ? scene.nu : 0.0;
-  Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace> traction("ondine::NFM::traction", nq, 2 * D);
+  WallTractions<D> t{Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace>("ondine::NFM::traction", nq, 2 * D),
+                     Kokkos::View<int*, MemSpace>("ondine::NFM::counted", nq)};
   PassContext<D> c = sim.context(sim.levels().front());
   c.R = sim.R();  // with zones each SPH particle with its level's radius (WallForces.hpp), R the coarsest
   c.nu = nu;
-  sim.scheme().wall_traction(c, traction);
-  // several ranks: each wall point is counted by the rank that owns its cell (its
-  // support is complete there: owned particles and halos)
-  Kokkos::View<int*, MemSpace> counted("ondine::NFM::counted", nq);
+  sim.scheme().wall_traction(c, t.traction);
+  const auto counted = t.counted;
   Kokkos::deep_copy(counted, 1);
   if (!sim.comm().serial()) {
     const auto orb = sim.domain().orb();
@@ -39,6 +45,19 @@ std::vector<WallForce> wall_forces(Simulation<D>& sim) {
       counted(q) = orb.owner(xq) == me ? 1 : 0;
     });
   }
+  return t;
+}
+
+template <int D>
+std::vector<WallForce> wall_forces(Simulation<D>& sim) {
+  const Scene& scene = sim.scene();
+  const WallModel<D>& walls = sim.walls();
+  std::vector<WallForce> out;
+  if (walls.empty()) return out;
+  const int nq = walls.points().count;
+  const WallTractions<D> t = wall_tractions(sim);
+  const auto traction = t.traction;
+  const auto counted = t.counted;
   for (int w = 0; w < walls.wall_count(); ++w) {
     WallForce f;
     f.name = walls.names()[w];
@@ -60,6 +79,49 @@ std::vector<WallForce> wall_forces(Simulation<D>& sim) {
     out.push_back(f);
   }
   return out;
+}
+
+// Each wall point's load (solver/Measures.hpp): the counting rank's values, summed over the ranks.
+// P_p is the pressure force over s along n_out (WallTraction writes s <P_p> n_out).
+template <int D>
+WallLoadField wall_load_field(Simulation<D>& sim) {
+  WallLoadField f;
+  const WallModel<D>& walls = sim.walls();
+  if (walls.empty()) return f;
+  const int nq = walls.points().count;
+  const WallTractions<D> t = wall_tractions(sim);
+  Kokkos::View<double* [12], Kokkos::LayoutRight, MemSpace> packed("ondine::NFM::wall_load_field", nq);
+  const auto traction = t.traction;
+  const auto counted = t.counted;
+  const WallPoints<D> wp = walls.points();
+  Kokkos::parallel_for("ondine::NFM::wall_load_field", Kokkos::RangePolicy<ExecSpace>(0, nq), KOKKOS_LAMBDA(const int q) {
+    const double s = wp.s(q), on = counted(q) && s > 0 ? 1.0 : 0.0, inv_s = s > 0 ? 1.0 / s : 0.0;
+    double Pn = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      packed(q, k) = k < D ? on * wp.x(q, k) : 0.0;
+      packed(q, 3 + k) = k < D ? on * wp.n_out(q, k) : 0.0;
+      packed(q, 7 + k) = k < D ? on * (traction(q, k) + traction(q, D + k)) * inv_s : 0.0;
+      if (k < D) Pn += traction(q, k) * wp.n_out(q, k);
+    }
+    packed(q, 6) = on * Pn * inv_s;
+    packed(q, 10) = on * s;
+    packed(q, 11) = on * wp.wall(q);
+  });
+  std::vector<double> h(12 * static_cast<std::size_t>(nq));
+  Kokkos::deep_copy(Kokkos::View<double* [12], Kokkos::LayoutRight, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(h.data(), nq), packed);
+  sim.comm().sum_in_place(h);
+  for (int q = 0; q < nq; ++q) {
+    const double* r = &h[12 * static_cast<std::size_t>(q)];
+    for (int k = 0; k < 3; ++k) {
+      f.position.push_back(r[k]);
+      f.normal.push_back(r[3 + k]);
+      f.traction.push_back(r[7 + k]);
+    }
+    f.pressure.push_back(r[6]);
+    f.area.push_back(r[10]);
+    f.wall.push_back(r[11]);
+  }
+  return f;
 }
 
 template <int D>
