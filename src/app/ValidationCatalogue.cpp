@@ -24,6 +24,13 @@ const std::vector<ValidationCase>& catalogue() {
        {{"velocity_l2", 0.05}, {"mass_drift", 1e-12}}, {"fluid.sound_speed=20"}},
       {"poiseuille_2d", "cases/poiseuille_2d.yaml", 1.0, {{0.04, false}, {0.02, false}, {0.01, true}},
        {{"velocity_l2", 0.01}}, {}},
+      // The thesis' own protocol for the NFM Laplacian (4.85) (§4.7.1, Fig. 4.27): the steady
+      // Poiseuille flow (t = 10 s, the slowest transient mode at 5e-5 of its start), R/dx = 4, with
+      // the thesis operator (scheme.consistent_laplacian false). The thesis reports order 1.9;
+      // measured 4.6e-3, 2.6e-3, 1.4e-3 (order 0.8, 0.9: docs/validation.md, "NFM walls (2D)").
+      // The bound is a regression guard
+      {"poiseuille_2d_thesis_laplacian", "cases/poiseuille_2d.yaml", 1.0, {{0.04, false}, {0.02, true}, {0.01, true}},
+       {{"velocity_l2", 0.01}, {"wall_leaks", 0.5}}, {"scheme.consistent_laplacian=false", "time.duration=10", "time.output_interval=1"}},
       // start-up Couette (Morris et al. 1997), Re = 10, at t = 1 s: the transient and the sliding wall.
       // Measured 4.4e-4 (L/25) and 1.1e-4 (L/50), order 1.95; the bound is a regression guard
       {"couette_2d", "cases/couette_2d.yaml", 1.0, {{0.04, false}, {0.02, false}, {0.01, true}},
