@@ -10,6 +10,7 @@
 
 #include "io/AtomicFile.hpp"
 #include "io/H5Collective.hpp"
+#include "io/XdmfSeries.hpp"
 
 namespace ondine {
 
@@ -78,17 +79,7 @@ void SnapshotWriter::write(const ParticleSet<D>& p, double time, std::int64_t st
 }
 
 void SnapshotWriter::remove_from(std::size_t first) const {
-  namespace fs = std::filesystem;
-  if (comm_.rank() == 0 && fs::is_directory(dir_)) {
-    const std::string prefix = name_ + "_";
-    for (const auto& e : fs::directory_iterator(dir_)) {
-      const std::string f = e.path().filename().string();
-      if (f.size() != prefix.size() + 9 || f.compare(0, prefix.size(), prefix) != 0 || f.compare(f.size() - 3, 3, ".h5") != 0) continue;
-      const std::string digits = f.substr(prefix.size(), 6);
-      if (digits.find_first_not_of("0123456789") != std::string::npos) continue;
-      if (std::stoul(digits) >= first) fs::remove(e.path());
-    }
-  }
+  if (comm_.rank() == 0) remove_numbered_files(dir_, name_ + "_", first);
   comm_.barrier();
 }
 
@@ -105,28 +96,9 @@ void SnapshotWriter::resume(std::size_t count) {
 }
 
 void SnapshotWriter::write_index() const {
-  std::ostringstream x;
-  x << "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"2.0\">\n <Domain>\n"
-    << "  <Grid Name=\"" << name_ << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  x << std::setprecision(17);
-  for (const SnapshotEntry& e : entries_) {
-    x << "   <Grid Name=\"particles\" GridType=\"Uniform\">\n"
-      << "    <Time Value=\"" << e.time << "\"/>\n"
-      << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << e.particles << "\"/>\n"
-      << "    <Geometry GeometryType=\"XYZ\">\n"
-      << "     <DataItem Dimensions=\"" << e.particles << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
-      << e.file << ":/position</DataItem>\n    </Geometry>\n";
-    for (const auto& [name, comps] : e.fields) {
-      if (name == "position") continue;
-      x << "    <Attribute Name=\"" << name << "\" AttributeType=\"" << (comps == 3 ? "Vector" : "Scalar")
-        << "\" Center=\"Node\">\n     <DataItem Dimensions=\"" << e.particles << (comps == 3 ? " 3" : "")
-        << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << e.file << ":/" << name
-        << "</DataItem>\n    </Attribute>\n";
-    }
-    x << "   </Grid>\n";
-  }
-  x << "  </Grid>\n </Domain>\n</Xdmf>\n";
-  write_text_atomically(index_path(), x.str());
+  std::vector<XdmfPointSet> sets;
+  for (const SnapshotEntry& e : entries_) sets.push_back({e.file, e.time, e.particles, e.fields});
+  write_text_atomically(index_path(), xdmf_point_series(name_, "particles", sets));
 }
 
 SnapshotData read_snapshot(const std::string& path, bool with_values) {

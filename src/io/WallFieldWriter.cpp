@@ -6,6 +6,7 @@
 
 #include "io/AtomicFile.hpp"
 #include "io/H5Collective.hpp"
+#include "io/XdmfSeries.hpp"
 
 namespace ondine {
 
@@ -46,18 +47,10 @@ void WallFieldWriter::write(const WallLoadField& f, double time, std::int64_t st
 }
 
 void WallFieldWriter::remove_from(std::size_t first) const {
-  namespace fs = std::filesystem;
-  if (comm_.rank() == 0 && fs::is_directory(dir_ + "/walls")) {
-    const std::string prefix = name_ + "_";
-    for (const auto& e : fs::directory_iterator(dir_ + "/walls")) {
-      const std::string f = e.path().filename().string();
-      if (f.size() != prefix.size() + 9 || f.compare(0, prefix.size(), prefix) != 0 || f.compare(f.size() - 3, 3, ".h5") != 0) continue;
-      const std::string digits = f.substr(prefix.size(), 6);
-      if (digits.find_first_not_of("0123456789") != std::string::npos) continue;
-      if (std::stoul(digits) >= first) fs::remove(e.path());
-    }
+  if (comm_.rank() == 0) {
+    remove_numbered_files(dir_ + "/walls", name_ + "_", first);
+    if (first == 0) std::filesystem::remove(index_path());
   }
-  if (comm_.rank() == 0 && first == 0) fs::remove(index_path());
   comm_.barrier();
 }
 
@@ -76,27 +69,10 @@ void WallFieldWriter::resume(std::size_t count) {
 }
 
 void WallFieldWriter::write_index() const {
-  std::ostringstream x;
-  x << "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"2.0\">\n <Domain>\n"
-    << "  <Grid Name=\"" << name_ << "_walls\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  x << std::setprecision(17);
-  for (const Entry& e : entries_) {
-    x << "   <Grid Name=\"walls\" GridType=\"Uniform\">\n"
-      << "    <Time Value=\"" << e.time << "\"/>\n"
-      << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << e.points << "\"/>\n"
-      << "    <Geometry GeometryType=\"XYZ\">\n"
-      << "     <DataItem Dimensions=\"" << e.points << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
-      << e.file << ":/position</DataItem>\n    </Geometry>\n";
-    for (const auto& [name, comps] : {std::pair<const char*, int>{"normal", 3}, {"pressure", 1}, {"traction", 3}, {"area", 1}, {"wall", 1}}) {
-      x << "    <Attribute Name=\"" << name << "\" AttributeType=\"" << (comps == 3 ? "Vector" : "Scalar")
-        << "\" Center=\"Node\">\n     <DataItem Dimensions=\"" << e.points << (comps == 3 ? " 3" : "")
-        << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << e.file << ":/" << name
-        << "</DataItem>\n    </Attribute>\n";
-    }
-    x << "   </Grid>\n";
-  }
-  x << "  </Grid>\n </Domain>\n</Xdmf>\n";
-  write_text_atomically(index_path(), x.str());
+  std::vector<XdmfPointSet> sets;
+  for (const Entry& e : entries_)
+    sets.push_back({e.file, e.time, e.points, {{"normal", 3}, {"pressure", 1}, {"traction", 3}, {"area", 1}, {"wall", 1}}});
+  write_text_atomically(index_path(), xdmf_point_series(name_ + "_walls", "walls", sets));
 }
 
 }  // namespace ondine
