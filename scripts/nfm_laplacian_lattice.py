@@ -2,7 +2,8 @@
 """The discrete NFM Laplacian (thesis 4.85) of f = y^2 for a particle of a Cartesian
 lattice (first row at dx/2) next to a flat wall, with the analytical Shepard
 factor gamma and with the discrete kernel sum, 2D Wendland C2, R/dx = 3 and 4:
-the exact value is 2. Explains the first-order Poiseuille error (docs/validation.md).
+the exact value is 2; then the defect on f = y row by row and the steady Poiseuille error it
+predicts. Explains the first-order Poiseuille error (docs/validation.md).
 Needs python3-scipy."""
 import numpy as np
 from scipy import integrate
@@ -62,3 +63,16 @@ for Rdx in (3,4):
     lr=lap_f(k0,Rdx,lambda x,y: x*x+(y-(k0+0.5))**2)
     lyy=lap_f(k0,Rdx,lambda x,y: (y-(k0+0.5))**2)
     print(Rdx,k0,'L(y^2)=%.4f  L(r^2)=%.4f  corrected=%.4f   L((y-yi)^2)=%.4f'%(ly,lr,ly*4/lr,lyy))
+
+# The defect on the linear field f = y, row by row: c_k, in units of 1/dx (every term of (4.85)
+# scales as 1/dx at fixed R/dx). In the steady Poiseuille flow (height L, u'(0) = 4 U/L) the
+# viscous term nu u'(0) c_k / dx of the first rows, integrated twice from the wall, shifts the
+# whole profile by u'(0) dx sum_k c_k (k + 1/2): a uniform offset, first order in dx, whose
+# velocity L2 error relative to the parabola's RMS (sqrt(8/15) U) is
+# 4 |sum_k c_k (k + 1/2)| / sqrt(8/15) dx / L (docs/validation.md, "NFM walls (2D)")
+print("L(y) row by row (exact 0), sum_k c_k, sum_k c_k (k + 1/2), predicted steady L2 error x L/dx:")
+for Rdx in (3, 4, 6):
+  rows = [lap(k0, Rdx, lambda y: y)[0] for k0 in range(0, int(Rdx) + 2)]
+  m1 = sum(c * (k + 0.5) for k, c in enumerate(rows))
+  print(Rdx, " ".join('%.4f' % r for r in rows), ' sum %.4f' % sum(rows), ' moment %.4f' % m1,
+        ' L2 x L/dx %.4f' % (4 * abs(m1) / np.sqrt(8 / 15)))
