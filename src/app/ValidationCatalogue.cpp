@@ -122,7 +122,7 @@ const std::vector<ValidationCase>& catalogue() {
       // by walls across it relaxes into a packed layer along them whose excess pressure grows with
       // the depth; its buoyancy error is shown, not bounded (docs/validation.md)
       {"stability_star_body_lagrangian", "cases/star_body_2d.yaml", 0.3, {{0.02, false}, {0.01, true}},
-       stable({{"wall_crossings", 0.5}}), {"scheme.transport=lagrangian"}, {}, {"buoyancy_error", "pressure_linf", "wall_leaks"}},
+       stable({{"wall_crossings", 0.5}}), {"scheme.shifting=false"}, {}, {"buoyancy_error", "pressure_linf", "wall_leaks"}},
       // still water whose particles start 0.01 dx from the left wall, the right wall and the floor, two of
       // them 0.01 dx from both walls of a corner (fluid_blocks[0].wall_clearance = 0.01), 1 s undamped:
       // no particle may end behind a wall (wall_crossings), E_k as the still tanks. Particles that start
