@@ -53,7 +53,7 @@ def main():
                     errors.append("%s t=%g wall %s F%s: points %.12g, walls.csv %.12g" % (w, t, name, axis, field_f, csv_f))
         if hydro and w == walls[-1]:
             rho, g, H, tol = hydro
-            up = 2 if "z" in "".join(k for k in rows[0] if k.endswith("pressure_fz")) else 1
+            up = 2 if any(k.endswith(".pressure_fz") for k in rows[0]) else 1  # 3D: z is up
             floor = [pres[q] for q in range(len(pres)) if abs(pos[3 * q + up]) < 1e-12
                      and 0.1 < pos[3 * q] < 0.9 and (up == 1 or 0.1 < pos[3 * q + 1] < 0.9)]
             ref = rho * g * H
