@@ -6,6 +6,8 @@
 // the NFM Laplacian's wall term (4.85), each Shepard-interpolated (2.40-2.41) at
 // every wall quadrature point q from the particles around it, then integrated:
 //   F_w = sum_{q in w} s_q [ <P_p>_q n_out + rho0 nu <(u_i - u_q) / |d_n|>_q ].
+// With state_only (the wall sensors) P_p is replaced by the MUSCL state's pressure
+// P_f = P_i + c_i^2 (rho_f - rho_i) of (4.30)-(4.32): (4.14) with u_n = 0.
 // (The reaction of the particles' wall terms is not used: with the 1/gamma_i
 // Shepard factors the fluid-fluid terms do not cancel pairwise, so it would not
 // be the force on the wall.)
@@ -42,6 +44,7 @@ struct WallTraction {
   field_view_t<field::AprGuard, D> guard = {};
   bool velocity_muscl = false;  // scheme.wall_velocity_reconstruction
   Kokkos::View<double*, MemSpace> c2;  // c_i^2 = eos.c2(rho_i) of each particle (ParticleSoundSpeed2), once per call
+  bool state_only = false;  // the MUSCL state's pressure P_f alone, without (4.14)'s rho c u_n (wall sensors)
 
   // <grad u>_i of the velocity's MUSCL state (4.30), over the particles within R_i of i
   // (same birth level, SPH or guard, with refinement zones: i's own L. list)
@@ -82,8 +85,9 @@ struct WallTraction {
       const double w = m(i) / rho_i * Wr;
       const double c2_i = c2(i);
       const Vec<D> ui = load<D>(u, i);
-      const double un = velocity_muscl ? wall_normal_velocity<D>(velocity_gradient(i, load<D>(x, i), ui), xiq, ui, uq, n)
-                                       : dot(ui - uq, n);
+      const double un = state_only       ? 0.0
+                        : velocity_muscl ? wall_normal_velocity<D>(velocity_gradient(i, load<D>(x, i), ui), xiq, ui, uq, n)
+                                         : dot(ui - uq, n);
       sp += w * normal_flux_pressure<D>(rho_i, P(i), c2_i, kmath::sqrt(c2_i), load<D>(grad_rho, i), xiq, un);
       sv += (-w / fluid_side_dn<D>(xiq, n, dn_min)) * (ui - uq);
       sw += w;

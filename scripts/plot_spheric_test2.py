@@ -2,10 +2,13 @@
 """SPHERIC Test 2: a run's sensors against the measured series (Kleefsman et al. 2005).
 
 usage: plot_spheric_test2.py OUT.png RUN_DIR [RUN_DIR ...]
-Each RUN_DIR is the output folder of cases/spheric_test2_3d.yaml (probes.csv, waves.csv,
-summary.json); the measured series is cases/reference/spheric_test2_kleefsman2005.csv.
-Plots P1, P3 (Pa) and H2, H4 (m) over 0-2 s; the pressures are the raw Shepard samples
-at the sensor points, unfiltered.
+Each RUN_DIR is the output folder of cases/spheric_test2_3d.yaml (wall_sensors.csv,
+probes.csv, waves.csv, summary.json); the measured series is
+cases/reference/spheric_test2_kleefsman2005.csv. Plots the eight pressure sensors P1-P8 (Pa)
+and the heights H2, H4 (m) over 0-2 s: solid, the wall sensors (the NFM wall state's pressure
+averaged over the sensor's face); dashed, the raw probes (the fluid's pressure
+Shepard-interpolated at the same point); both unfiltered. A run without wall_sensors.csv
+shows its probes only.
 """
 import csv
 import json
@@ -32,16 +35,16 @@ def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
     exp = read_csv(measured)
-    fig, axes = plt.subplots(2, 2, figsize=(11, 7))
-    panels = [("P1", "probes.csv", "P1.pressure", "Pa"), ("P3", "probes.csv", "P3.pressure", "Pa"),
-              ("H2", "waves.csv", "H2.elevation", "m"), ("H4", "waves.csv", "H4.elevation", "m")]
-    for ax, (name, _, _, unit) in zip(axes.flat, panels):
-        sel = [k for k, t in enumerate(exp["time"]) if t <= 2.0]
+    names = ["P%d" % k for k in range(1, 9)] + ["H2", "H4"]
+    fig, axes = plt.subplots(5, 2, figsize=(11, 15))
+    sel = [k for k, t in enumerate(exp["time"]) if t <= 2.0]
+    for ax, name in zip(axes.flat, names):
         ax.plot([exp["time"][k] for k in sel], [exp[name][k] for k in sel], "k-", lw=0.8, label="experiment")
         ax.set_title(name)
         ax.set_xlabel("t (s)")
-        ax.set_ylabel(unit)
-    for run in sys.argv[2:]:
+        ax.set_ylabel("Pa" if name[0] == "P" else "m")
+    for c, run in enumerate(sys.argv[2:]):
+        colour = "C%d" % c
         with open(os.path.join(run, "summary.json")) as f:
             s = json.load(f)
         label = "dx = %g m, %d particles, %.0f s" % (s["scheme"]["dx"], s["particles"], s["wall_seconds"])
@@ -49,13 +52,22 @@ def main():
             r = s["refinement"]
             label = "APR dx = %g / %g m, %d particles at the end, %.0f s" % (
                 s["scheme"]["dx"], s["scheme"]["dx"] / 2 ** (r["levels"] - 1), r["particles"], s["wall_seconds"])
-        for ax, (name, file, column, _) in zip(axes.flat, panels):
-            d = read_csv(os.path.join(run, file))
-            ax.plot(d["time"], d[column], lw=0.8, label=label)
-    axes[0, 0].legend(fontsize=8)
+        probes = read_csv(os.path.join(run, "probes.csv"))
+        waves = read_csv(os.path.join(run, "waves.csv"))
+        path = os.path.join(run, "wall_sensors.csv")
+        wall = read_csv(path) if os.path.exists(path) else None
+        for ax, name in zip(axes.flat, names):
+            if name[0] == "H":
+                ax.plot(waves["time"], waves[name + ".elevation"], color=colour, lw=0.8, label=label)
+                continue
+            if wall is not None and name + ".pressure" in wall:
+                ax.plot(wall["time"], wall[name + ".pressure"], color=colour, lw=0.8, label=label + ", wall sensor")
+            if name + ".pressure" in probes:
+                ax.plot(probes["time"], probes[name + ".pressure"], color=colour, lw=0.6, ls="--", label=label + ", probe")
+    axes[0, 0].legend(fontsize=7)
     fig.suptitle("SPHERIC Test 2: sensors against Kleefsman et al. (2005)")
     fig.tight_layout()
-    fig.savefig(sys.argv[1], dpi=110)
+    fig.savefig(sys.argv[1], dpi=100)
 
 
 if __name__ == "__main__":

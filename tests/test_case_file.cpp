@@ -150,6 +150,26 @@ TEST_CASE("Bad case files get a message naming file, line and key", "[unit][case
     const auto m = error_of(replace(good, "viscous_term: morris", "viscous_term: none"));
     CHECK_THAT(m, Contains("fluid.viscosity") && Contains("viscous_term"));
   }
+  SECTION("wall sensors: walls needed, a normal, a face size, fixed walls, unique names") {
+    const std::string bounded = replace(good, "periodic: [true, true]", "periodic: [false, false]");
+    const std::string walls = bounded + "walls:\n  - {name: floor, points: [[0.0, 0.0], [1.0, 0.0]], fluid_side: left}\n";
+    const std::string ok = "wall_sensors:\n  - {name: S1, position: [0.5, 0.0], normal: [0, -1], size: 0.01}\n";
+    CHECK(error_of(walls + ok).empty());
+    CHECK_THAT(error_of(bounded + ok), Contains("cases/box.yaml:") && Contains("wall_sensors") && Contains("no walls"));
+    CHECK_THAT(error_of(walls + "wall_sensors:\n  - {name: S1, position: [0.5, 0.0], normal: [0, 0]}\n"),
+               Contains("wall_sensors[0].normal") && Contains("non-zero"));
+    CHECK_THAT(error_of(walls + "wall_sensors:\n  - {name: S1, position: [0.5, 0.0]}\n"), Contains("wall_sensors[0].normal") && Contains("missing"));
+    CHECK_THAT(error_of(walls + "wall_sensors:\n  - {name: S1, position: [0.5, 0.0], normal: [0, -1], size: -1}\n"),
+               Contains("wall_sensors[0].size"));
+    CHECK_THAT(error_of(walls + "wall_sensors:\n  - {name: S1, position: [0.5, 2.0], normal: [0, -1]}\n"),
+               Contains("wall_sensors[0].position") && Contains("outside the domain"));
+    CHECK_THAT(error_of(walls + ok + "  - {name: S1, position: [0.4, 0.0], normal: [0, -1]}\n"),
+               Contains("wall_sensors[1].name") && Contains("duplicate"));
+    const std::string moving =
+        bounded + "walls:\n  - {name: floor, points: [[0.0, 0.0], [1.0, 0.0]], fluid_side: left, motion: {type: oscillation, amplitude: [0.02, 0.0], period: 1.0}}\n";
+    REQUIRE(error_of(moving).empty());
+    CHECK_THAT(error_of(moving + ok), Contains("wall_sensors") && Contains("move"));
+  }
   SECTION("not YAML at all") {
     const auto m = error_of("dimension: [2\n");
     CHECK_THAT(m, Contains("cases/box.yaml:") && Contains("not valid YAML"));

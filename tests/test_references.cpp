@@ -161,4 +161,13 @@ TEST_CASE("SPHERIC Test 2 errors: peaks, their times and level RMS against a kno
   CHECK(e.at("P3_peak_time_error") == Approx(0.0).margin(1e-12));
   CHECK(e.at("H2_rms_error") == Approx(0.011 / 0.55).epsilon(1e-9));
   CHECK(e.at("H4_rms_error") == Approx(0.0).margin(1e-12));
+  // impulses over 0.35-0.60 s: the triangles' areas, 200 and 240 Pa s on P1, equal on P3
+  CHECK(e.at("P1_impulse_relative_error") == Approx(0.2).epsilon(1e-9));
+  CHECK(e.at("P3_impulse_relative_error") == Approx(0.0).margin(1e-12));
+  // RMS over 0.3-2 s at the run's 851 samples, over the measured 10 kPa peak: the shifted,
+  // taller triangle and the 50 kPa sample at 1.3 s (computed independently: 0.20960485458)
+  CHECK(e.at("P1_rms_error") == Approx(0.2096048545826881).epsilon(1e-9));
+  CHECK(e.at("P3_rms_error") == Approx(0.0).margin(1e-12));
+  // a run that stops before 0.60 s gets no impulse
+  CHECK(reference::spheric_test2_errors(measured, sim, 0.55, 0.5).count("P1_impulse_relative_error") == 0);
 }

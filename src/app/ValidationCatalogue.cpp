@@ -70,7 +70,9 @@ const std::vector<ValidationCase>& catalogue() {
       // shown, not bounded
       {"spheric_test2_3d", "cases/spheric_test2_3d.yaml", 0.55, {{0.05, true}, {0.04, true}},
        {{"H2_rms_error", 0.08}, {"H4_rms_error", 0.03}, {"wall_crossings", 0.5}},
-       {}, {}, {"P1_peak_relative_error", "P1_peak_time_error", "P3_peak_relative_error", "P3_peak_time_error", "wall_leaks", "wall_corrections"}},
+       {}, {}, {"P1_peak_relative_error", "P1_peak_time_error", "P3_peak_relative_error", "P3_peak_time_error", "P1_impulse_relative_error",
+                "P3_impulse_relative_error", "P1_rms_error", "P3_rms_error", "P1_probe_peak_relative_error", "P3_probe_peak_relative_error",
+                "P1_probe_impulse_relative_error", "wall_leaks", "wall_corrections"}},
       // Martin & Moyce's dam break: 25 x 50 (quick), 50 x 100 and 100 x 200 particles in the column
       {"dam_break_2d", "cases/dam_break_2d.yaml", 0.05715, {{0.002286, false}, {0.001143, true}, {0.0005715, true}},
        {{"front_max_relative_error", 0.2}, {"front_speed_relative_error", 0.1}}, {}},

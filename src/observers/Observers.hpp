@@ -12,6 +12,7 @@
 #include "observers/SphericTest2Sensors.hpp"
 #include "observers/SurgeFront.hpp"
 #include "observers/WallForceSeries.hpp"
+#include "observers/WallSensorSeries.hpp"
 #include "observers/WaveGaugeSeries.hpp"
 
 namespace ondine {
@@ -26,6 +27,7 @@ std::vector<std::unique_ptr<Observer<D>>> make_observers(const Scene& s, const s
   list.push_back(std::make_unique<DiagnosticsSeries<D>>(s, out, writer));
   if (sim.template find_hook<OpenBoundaryStep<D>>()) list.push_back(std::make_unique<OpenMassBalance<D>>(out, writer, sim));
   if (!s.probes.empty()) list.push_back(std::make_unique<ProbeSeries<D>>(s, out, writer));
+  if (!s.wall_sensors.empty()) list.push_back(std::make_unique<WallSensorSeries<D>>(s, out, writer));
   if (!s.wave_gauges.empty()) list.push_back(std::make_unique<WaveGaugeSeries<D>>(s, out, writer));
   if (ref == ReferenceKind::Cylinder) list.push_back(std::make_unique<ForceCoefficientObserver<D>>(s));
   if (ref == ReferenceKind::SphericTest2) list.push_back(std::make_unique<SphericTest2Sensors<D>>(s));

@@ -51,18 +51,47 @@ std::pair<double, double> peak(const Series& s, double t_max) {
   return best;
 }
 
+// the integral of s over [a, b]: the trapezoid rule on its samples, the ends interpolated
+double integral(const Series& s, double a, double b) {
+  double I = 0, tp = a, vp = interpolate(s, a);
+  for (const auto& [t, v] : s) {
+    if (t <= a) continue;
+    if (t >= b) break;
+    I += 0.5 * (v + vp) * (t - tp);
+    tp = t;
+    vp = v;
+  }
+  return I + 0.5 * (interpolate(s, b) + vp) * (b - tp);
+}
+
 }  // namespace
 
 std::map<std::string, double> spheric_test2_errors(const std::map<std::string, Series>& measured,
                                                    const std::map<std::string, Series>& simulated, double height, double t_end) {
   std::map<std::string, double> e;
   constexpr double first_impact = 0.8;  // s: the water reaches the box at about 0.4 s
+  constexpr double impulse_from = 0.35, impulse_to = 0.60;  // s: the first impact's impulse
+  constexpr double rms_from = 0.3, rms_to = 2.0;             // s: the pressure's RMS difference
   for (const char* p : {"P1", "P3"}) {
     const auto m = measured.find(p), s = simulated.find(p);
     if (m == measured.end() || s == simulated.end() || s->second.empty()) continue;
     const auto pm = peak(m->second, first_impact), ps = peak(s->second, first_impact);
     e[std::string(p) + "_peak_relative_error"] = std::abs(ps.second - pm.second) / pm.second;
     e[std::string(p) + "_peak_time_error"] = std::abs(ps.first - pm.first);
+    if (t_end >= impulse_to && s->second.back().first >= impulse_to) {
+      const double Im = integral(m->second, impulse_from, impulse_to), Is = integral(s->second, impulse_from, impulse_to);
+      e[std::string(p) + "_impulse_relative_error"] = std::abs(Is - Im) / Im;
+    }
+    double sq = 0;
+    int n = 0;
+    for (const auto& [t, v] : s->second) {
+      if (t < rms_from) continue;
+      if (t > std::min(t_end, rms_to)) break;
+      const double d = v - interpolate(m->second, t);
+      sq += d * d;
+      ++n;
+    }
+    if (n > 0) e[std::string(p) + "_rms_error"] = std::sqrt(sq / n) / pm.second;
   }
   for (const char* h : {"H2", "H4"}) {
     const auto m = measured.find(h), s = simulated.find(h);

@@ -38,7 +38,7 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
   const Reader r(path, apply_overrides(root, overrides));
 
   r.only_keys(root, "", {"name", "dimension", "domain", "fluid", "discretisation", "fluid_blocks", "walls", "forces",
-                         "scheme", "time", "probes", "wave_gauges", "reference", "parallel", "checkpoint",
+                         "scheme", "time", "probes", "wall_sensors", "wave_gauges", "reference", "parallel", "checkpoint",
                          "refinement", "open_boundaries"});
   Scene s;
   s.source_file = path;
@@ -57,6 +57,7 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
   read_parallel(r, root, s);
   read_checkpoint(r, root, s);
   read_probes(r, root, s);
+  read_wall_sensors(r, root, s);
   read_wave_gauges(r, root, s);
   read_reference(r, root, s);
   read_refinement(r, root, s);

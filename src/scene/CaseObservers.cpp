@@ -1,6 +1,7 @@
 #include <vector>
 
 #include <algorithm>
+#include <cmath>
 
 #include "reference/SensorSeries.hpp"
 #include "scene/CaseSections.hpp"
@@ -20,8 +21,10 @@ void read_spheric_reference(const Reader& r, const YAML::Node& rf, Scene& s) {
     r.fail(rf["file"], "reference.file", e.what());
   }
   for (const char* p : {"P1", "P3"})
-    if (std::none_of(s.probes.begin(), s.probes.end(), [&](const Probe& q) { return q.name == p; }))
-      r.fail(rf["type"], "reference.type", std::string("spheric_test2 compares the probe named ") + p + ": add it to probes");
+    if (std::none_of(s.probes.begin(), s.probes.end(), [&](const Probe& q) { return q.name == p; }) &&
+        std::none_of(s.wall_sensors.begin(), s.wall_sensors.end(), [&](const WallSensor& q) { return q.name == p; }))
+      r.fail(rf["type"], "reference.type",
+             std::string("spheric_test2 compares the pressure sensor named ") + p + ": add it to wall_sensors or probes");
   for (const char* h : {"H2", "H4"})
     if (std::none_of(s.wave_gauges.begin(), s.wave_gauges.end(), [&](const WaveGauge& g) { return g.name == h; }))
       r.fail(rf["type"], "reference.type", std::string("spheric_test2 compares the wave gauge named ") + h + ": add it to wave_gauges");
@@ -77,6 +80,39 @@ void read_probes(const Reader& r, YAML::Node& root, Scene& s) {
           r.fail(pr[i]["position"], key + ".position", "the probe lies outside the domain");
       s.probes.push_back(p);
     }
+  }
+}
+
+// pressure sensors on the walls: a face of side `size` centred at `position`, normal to `normal`
+// (out of the fluid)
+void read_wall_sensors(const Reader& r, YAML::Node& root, Scene& s) {
+  const int D = s.dimension;
+  const YAML::Node ws = root["wall_sensors"];
+  if (!ws) return;
+  if (!ws.IsSequence()) r.fail(ws, "wall_sensors", "expected a list of {name, position, normal, size}");
+  if (s.walls.empty()) r.fail(ws, "wall_sensors", "wall sensors read the pressure of NFM walls: the case has no walls");
+  for (const Wall& w : s.walls)
+    if (w.motion != WallMotion::Fixed && w.motion != WallMotion::Sliding)
+      r.fail(ws, "wall_sensors", "wall sensors stay where they are put: not built for a case whose walls move (wall '" + w.name + "')");
+  for (std::size_t i = 0; i < ws.size(); ++i) {
+    const std::string key = "wall_sensors[" + std::to_string(i) + "]";
+    r.only_keys(ws[i], key, {"name", "position", "normal", "size"});
+    WallSensor w;
+    std::vector<std::string> taken;
+    for (const WallSensor& q : s.wall_sensors) taken.push_back(q.name);
+    w.name = csv_column_name(r, ws[i], key, "wall sensor", taken);
+    w.position = r.vector(r.required(ws[i], key, "position"), key + ".position", D, " (m, the centre of the sensor's face)");
+    for (int k = 0; k < D; ++k)
+      if (w.position[k] < s.domain.min[k] || w.position[k] > s.domain.max[k])
+        r.fail(ws[i]["position"], key + ".position", "the sensor lies outside the domain");
+    w.normal = r.vector(r.required(ws[i], key, "normal"), key + ".normal", D, " (the wall's normal out of the fluid)");
+    double len = 0;
+    for (int k = 0; k < D; ++k) len += w.normal[k] * w.normal[k];
+    len = std::sqrt(len);
+    if (!(len > 0)) r.fail(ws[i]["normal"], key + ".normal", "expected a non-zero vector (the wall's normal out of the fluid)");
+    for (int k = 0; k < D; ++k) w.normal[k] /= len;
+    if (ws[i]["size"]) w.size = r.non_negative(ws[i]["size"], key + ".size", " (m, the side of the sensor's face; 0: a point)");
+    s.wall_sensors.push_back(w);
   }
 }
 

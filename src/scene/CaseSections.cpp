@@ -49,7 +49,7 @@ void read_discretisation(const Reader& r, YAML::Node& root, Scene& s) {
   const YAML::Node dom = root["domain"];
   const YAML::Node disc = r.required(root, "", "discretisation");
   r.only_keys(disc, "discretisation", {"dx", "kernel", "R_over_dx", "reorder_interval", "neighbour_skin",
-                                       "wall_quadrature_spacing"});
+                                       "wall_quadrature_spacing", "wall_quadrature_spacing_dx"});
   s.dx = r.positive(r.required(disc, "discretisation", "dx"), "discretisation.dx", " (m)");
   if (disc["kernel"])
     s.kernel = kernel_of(r.word(disc["kernel"], "discretisation.kernel", {"wendland_c2", "quartic_spline", "cubic_spline"}));
@@ -62,6 +62,12 @@ void read_discretisation(const Reader& r, YAML::Node& root, Scene& s) {
     s.reorder_interval = static_cast<int>(r.integer(disc["reorder_interval"], "discretisation.reorder_interval", 0, 1000000));
   if (disc["wall_quadrature_spacing"])
     s.wall_quadrature_spacing = r.positive(disc["wall_quadrature_spacing"], "discretisation.wall_quadrature_spacing", " (m)");
+  if (disc["wall_quadrature_spacing_dx"]) {
+    if (disc["wall_quadrature_spacing"])
+      r.fail(disc["wall_quadrature_spacing_dx"], "discretisation.wall_quadrature_spacing_dx",
+             "give the spacing either in metres (wall_quadrature_spacing) or in dx, not both");
+    s.wall_quadrature_spacing_dx = r.positive(disc["wall_quadrature_spacing_dx"], "discretisation.wall_quadrature_spacing_dx", " (in dx)");
+  }
   if (disc["neighbour_skin"]) s.neighbour_skin = r.non_negative(disc["neighbour_skin"], "discretisation.neighbour_skin", " (in dx)");
   for (int k = 0; k < D; ++k) {
     if (!s.periodic[k]) continue;

@@ -51,6 +51,7 @@ void read_wall_mesh(const Reader& r, const YAML::Node& w, const std::string& key
 
 // CaseObservers.cpp: what a run measures and compares with
 void read_probes(const Reader& r, YAML::Node& root, Scene& s);
+void read_wall_sensors(const Reader& r, YAML::Node& root, Scene& s);
 void read_wave_gauges(const Reader& r, YAML::Node& root, Scene& s);
 void read_reference(const Reader& r, YAML::Node& root, Scene& s);
 

@@ -48,11 +48,13 @@ MemoryEstimate estimate_memory(const Scene& s) {
     double area = 0;
     for (const Wall& w : s.walls) area += geometry::total_area(geometry::TriangleMesh{w.mesh.vertices, w.mesh.triangles});
     for (int l = 0; l <= s.max_refinement_level(); ++l) {
-      const double h = s.wall_quadrature_spacing > 0 ? s.wall_quadrature_spacing : 0.5 * s.dx / std::pow(2.0, l);
+      const double h = s.wall_quadrature_spacing > 0 ? s.wall_quadrature_spacing
+                       : (s.wall_quadrature_spacing_dx > 0 ? s.wall_quadrature_spacing_dx : 0.5) * s.dx / std::pow(2.0, l);
       e.wall_points += area / (h * h);
     }
   } else {
-    const double h = s.wall_quadrature_spacing > 0 ? s.wall_quadrature_spacing : 0.25 * dx_finest;
+    const double h = s.wall_quadrature_spacing > 0 ? s.wall_quadrature_spacing
+                     : (s.wall_quadrature_spacing_dx > 0 ? s.wall_quadrature_spacing_dx : 0.25) * dx_finest;
     for (const Wall& w : s.walls)
       for (std::size_t i = 0; i + 1 < w.points.size() + (w.closed ? 1 : 0); ++i) {
         const auto& a = w.points[i];

@@ -91,6 +91,18 @@ struct Probe {
   Vec3 position{0, 0, 0};
 };
 
+// A pressure sensor on a wall (wall_sensors:): the NFM wall pressure P_p of (4.14) with the
+// MUSCL state (4.30), Shepard-interpolated at points of the sensor's face (a square of side
+// `size` centred at `position`, a segment in 2D, in the plane normal to `normal`) and
+// averaged over it (solver/measures/WallLoads.hpp). `normal`: the wall's unit normal
+// pointing out of the fluid (into the wall), as n_out of the wall points.
+struct WallSensor {
+  std::string name;
+  Vec3 position{0, 0, 0};
+  Vec3 normal{0, 0, 0};
+  double size = 0;  // m; 0: a point sensor
+};
+
 // A wave gauge: a vertical line (along -gravity, the last axis) at `position`
 // (its other coordinates), from `bottom` to `top` (m along that axis).
 struct WaveGauge {
@@ -172,7 +184,8 @@ struct Scene {
 
   std::vector<FluidBlock> blocks;
   std::vector<Wall> walls;
-  double wall_quadrature_spacing = 0;  // m; 0: dx / 4
+  double wall_quadrature_spacing = 0;  // m; 0: wall_quadrature_spacing_dx, or dx / 4 (2D), dx / 2 (3D)
+  double wall_quadrature_spacing_dx = 0;  // in dx (of each refinement level in 3D); 0: unset
 
   Vec3 gravity{0, 0, 0};     // m/s^2
   Vec3 body_force{0, 0, 0};  // m/s^2 (force per unit mass)
@@ -215,6 +228,7 @@ struct Scene {
   std::int64_t max_steps = -1;   // -1: no limit
   double damping_time = 0;       // s: initial relaxation, u *= exp(-dt / (damping_time / 10)) while t < damping_time
   std::vector<Probe> probes;
+  std::vector<WallSensor> wall_sensors;
   // adaptive particle refinement: empty = the uniform code path (no APR field, kernel or pass)
   std::vector<RefinementZone> refinement_zones;
   bool refinement_guard_shifting = false;  // shift the daughter guards towards a regular arrangement (kernels/apr/GuardSpacing.hpp)

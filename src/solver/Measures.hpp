@@ -69,6 +69,9 @@ template <int D>
 std::vector<WallForce> wall_forces(Simulation<D>& sim);
 template <int D>
 WallLoadField wall_load_field(Simulation<D>& sim);
+// the pressure of each of the scene's wall sensors (wall_sensors:), averaged over its face
+template <int D>
+std::vector<double> wall_sensor_pressures(Simulation<D>& sim);
 template <int D>
 std::int64_t wall_leaks(const Simulation<D>& sim, double clearance = -1);
 // measures/Counts.hpp: particles of all ranks; SPH particles (guards excluded) on this

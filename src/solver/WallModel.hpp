@@ -18,10 +18,12 @@ namespace ondine {
 constexpr double kWallQuadratureSpacing3D = 0.5;
 
 // The wall quadrature's spacing for particles of spacing dx: the case's
-// discretisation.wall_quadrature_spacing, or dx / 4 (2D) and kWallQuadratureSpacing3D dx (3D)
+// discretisation.wall_quadrature_spacing (m) or wall_quadrature_spacing_dx (times dx), or
+// dx / 4 (2D) and kWallQuadratureSpacing3D dx (3D)
 template <int D>
 double wall_quadrature_spacing(const Scene& scene, double dx) {
   if (scene.wall_quadrature_spacing > 0) return scene.wall_quadrature_spacing;
+  if (scene.wall_quadrature_spacing_dx > 0) return scene.wall_quadrature_spacing_dx * dx;
   return D == 2 ? dx / 4 : kWallQuadratureSpacing3D * dx;
 }
 

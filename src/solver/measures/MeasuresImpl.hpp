@@ -14,6 +14,7 @@
   template double front_position<D>(const Simulation<D>&);                                     \
   template std::vector<WallForce> wall_forces<D>(Simulation<D>&);                              \
   template WallLoadField wall_load_field<D>(Simulation<D>&);                                   \
+  template std::vector<double> wall_sensor_pressures<D>(Simulation<D>&);                      \
   template std::int64_t wall_leaks<D>(const Simulation<D>&, double);                           \
   template std::int64_t global_size<D>(const Simulation<D>&);                                  \
   template std::int64_t sph_particles<D>(const Simulation<D>&);                                \

@@ -1,6 +1,9 @@
 #pragma once
 // The loads of the fluid on the walls, and the particles that leaked through them
 // (solver/Measures.hpp).
+#include <algorithm>
+#include <cmath>
+
 #include "kernels/FluidRegion.hpp"
 #include "kernels/WallForces.hpp"
 #include "solver/FluidRegionBuild.hpp"
@@ -17,26 +20,30 @@ struct WallTractions {
   Kokkos::View<int*, MemSpace> counted;
 };
 
+// The traction of the fluid at the given points (the walls' quadrature points, or a wall
+// sensor's sample points)
+// state_only: the MUSCL state's pressure P_f in place of P_p (kernels/WallForces.hpp)
 template <int D>
-WallTractions<D> wall_tractions(Simulation<D>& sim) {
+WallTractions<D> tractions_at(Simulation<D>& sim, const WallPoints<D>& points, bool state_only = false) {
   const Scene& scene = sim.scene();
-  const WallModel<D>& walls = sim.walls();
   StepState<D> state(sim);
   state.ensure_lists();  // the particle cell list is current
   state.domain().refresh_state_halos(state.particles());
-  const int nq = walls.points().count;
+  const int nq = points.count;
   const double nu = scene.viscous_term != ViscousTerm::None ? scene.nu : 0.0;
   WallTractions<D> t{Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace>("ondine::NFM::traction", nq, 2 * D),
                      Kokkos::View<int*, MemSpace>("ondine::NFM::counted", nq)};
   PassContext<D> c = sim.context(sim.levels().front());
   c.R = sim.R();  // with zones each SPH particle with its level's radius (WallForces.hpp), R the coarsest
   c.nu = nu;
+  c.wall = points;
+  c.wall_state_only = state_only;
   sim.scheme().wall_traction(c, t.traction);
   const auto counted = t.counted;
   Kokkos::deep_copy(counted, 1);
   if (!sim.comm().serial()) {
     const auto orb = sim.domain().orb();
-    const auto wx = walls.points().x;
+    const auto wx = points.x;
     const auto box = sim.domain().box();
     const int me = sim.comm().rank();
     Kokkos::parallel_for("ondine::NFM::wall_point_owner", Kokkos::RangePolicy<ExecSpace>(0, nq), KOKKOS_LAMBDA(const int q) {
@@ -46,6 +53,99 @@ WallTractions<D> wall_tractions(Simulation<D>& sim) {
     });
   }
   return t;
+}
+
+template <int D>
+WallTractions<D> wall_tractions(Simulation<D>& sim) {
+  return tractions_at(sim, sim.walls().points());
+}
+
+// The sample points of the wall sensors (Scene::WallSensor): per sensor an m x m grid (m
+// points along a segment in 2D) at the centres of equal pieces of its face, m = size / (dx/4)
+// rounded up, between 1 and 8, each weighted by its piece's area (1 for a point sensor); the
+// normal is the sensor's, the wall velocity zero; `wall` holds the sensor's index.
+template <int D>
+WallPoints<D> wall_sensor_points(const Scene& scene) {
+  struct Sample {
+    Vec<D> x, n;
+    double s;
+    int sensor;
+  };
+  std::vector<Sample> pts;
+  for (std::size_t k = 0; k < scene.wall_sensors.size(); ++k) {
+    const WallSensor& w = scene.wall_sensors[k];
+    Vec<D> c, n, t1 = Vec<D>::zero(), t2 = Vec<D>::zero();
+    for (int a = 0; a < D; ++a) c[a] = w.position[a], n[a] = w.normal[a];
+    if constexpr (D == 2) {
+      t1[0] = -n[1], t1[1] = n[0];
+    } else {
+      int least = 0;  // the axis least aligned with n
+      for (int a = 1; a < 3; ++a)
+        if (std::abs(n[a]) < std::abs(n[least])) least = a;
+      Vec<D> e = Vec<D>::zero();
+      e[least] = 1.0;
+      const Vec<D> a1{n[1] * e[2] - n[2] * e[1], n[2] * e[0] - n[0] * e[2], n[0] * e[1] - n[1] * e[0]};
+      t1 = (1.0 / std::sqrt(norm2(a1))) * a1;
+      t2 = Vec<D>{n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2], n[0] * t1[1] - n[1] * t1[0]};
+    }
+    const int m = w.size > 0 ? std::clamp(static_cast<int>(std::ceil(w.size / (0.25 * scene.dx))), 1, 8) : 1;
+    const double piece = w.size > 0 ? w.size / m : 0.0, s = w.size > 0 ? std::pow(piece, D - 1) : 1.0;
+    for (int a = 0; a < m; ++a)
+      for (int b = 0; b < (D == 3 ? m : 1); ++b) {
+        const double u = (a + 0.5) * piece - 0.5 * w.size, v = D == 3 ? (b + 0.5) * piece - 0.5 * w.size : 0.0;
+        pts.push_back({c + u * t1 + v * t2, n, s, static_cast<int>(k)});
+      }
+  }
+  const int nq = static_cast<int>(pts.size());
+  WallPoints<D> p;
+  p.count = nq;
+  p.x = decltype(p.x)("ondine::WallSensor::x", nq);
+  p.n_out = decltype(p.n_out)("ondine::WallSensor::n_out", nq);
+  p.u = decltype(p.u)("ondine::WallSensor::u", nq);
+  p.s = decltype(p.s)("ondine::WallSensor::s", nq);
+  p.wall = decltype(p.wall)("ondine::WallSensor::sensor", nq);
+  p.no_slip = decltype(p.no_slip)("ondine::WallSensor::no_slip", nq);  // 0: the pressure only
+  auto hx = Kokkos::create_mirror_view(p.x);
+  auto hn = Kokkos::create_mirror_view(p.n_out);
+  auto hs = Kokkos::create_mirror_view(p.s);
+  auto hw = Kokkos::create_mirror_view(p.wall);
+  for (int q = 0; q < nq; ++q) {
+    for (int a = 0; a < D; ++a) hx(q, a) = pts[q].x[a], hn(q, a) = pts[q].n[a];
+    hs(q) = pts[q].s;
+    hw(q) = pts[q].sensor;
+  }
+  Kokkos::deep_copy(p.x, hx);
+  Kokkos::deep_copy(p.n_out, hn);
+  Kokkos::deep_copy(p.s, hs);
+  Kokkos::deep_copy(p.wall, hw);
+  return p;
+}
+
+// The pressure of each wall sensor: sum_q s_q <P_f>_q / sum_q s_q over its sample points, P_f
+// the MUSCL state's pressure at the wall (4.30)-(4.32) without the impedance term rho c u_n of
+// (4.14) (kernels/WallForces.hpp, state_only, writes s_q <P_f>_q n_out), summed over the ranks
+// that count them.
+// A point with no particle within R reads 0 (a dry sensor).
+template <int D>
+std::vector<double> wall_sensor_pressures(Simulation<D>& sim) {
+  const WallPoints<D> points = wall_sensor_points<D>(sim.scene());
+  const int nq = points.count, ns = static_cast<int>(sim.scene().wall_sensors.size());
+  std::vector<double> load(ns, 0.0), area(ns, 0.0);
+  if (nq == 0) return load;
+  const WallTractions<D> t = tractions_at(sim, points, true);
+  const auto ht = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), t.traction);
+  const auto hc = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), t.counted);
+  const auto hn = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.n_out);
+  const auto hs = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.s);
+  const auto hw = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.wall);
+  for (int q = 0; q < nq; ++q) {  // the sensors' few sample points, not particles
+    if (!hc(q)) continue;
+    for (int k = 0; k < D; ++k) load[hw(q)] += ht(q, k) * hn(q, k);
+  }
+  for (int q = 0; q < nq; ++q) area[hw(q)] += hs(q);
+  sim.comm().sum_in_place(load);
+  for (int k = 0; k < ns; ++k) load[k] = area[k] > 0 ? load[k] / area[k] : 0.0;
+  return load;
 }
 
 template <int D>
