@@ -41,6 +41,15 @@ std::string csv_column_name(const Reader& r, const YAML::Node& item, const std::
   return name;
 }
 
+// item.position: D numbers inside the closed domain box
+Vec3 point_in_domain(const Reader& r, const YAML::Node& item, const std::string& key, const std::string& unit, const std::string& what,
+                     const Scene& s) {
+  const Vec3 p = r.vector(r.required(item, key, "position"), key + ".position", s.dimension, unit);
+  for (int k = 0; k < s.dimension; ++k)
+    if (p[k] < s.domain.min[k] || p[k] > s.domain.max[k]) r.fail(item["position"], key + ".position", what + " lies outside the domain");
+  return p;
+}
+
 // one wave gauge: a vertical line along the last axis
 WaveGauge read_wave_gauge(const Reader& r, const YAML::Node& item, const std::string& key, const Scene& s) {
   const int D = s.dimension;
@@ -64,7 +73,6 @@ WaveGauge read_wave_gauge(const Reader& r, const YAML::Node& item, const std::st
 }  // namespace
 
 void read_probes(const Reader& r, YAML::Node& root, Scene& s) {
-  const int D = s.dimension;
   if (const YAML::Node pr = root["probes"]) {
     if (!pr.IsSequence()) r.fail(pr, "probes", "expected a list of {name, position}");
     for (std::size_t i = 0; i < pr.size(); ++i) {
@@ -74,10 +82,7 @@ void read_probes(const Reader& r, YAML::Node& root, Scene& s) {
       std::vector<std::string> taken;
       for (const Probe& q : s.probes) taken.push_back(q.name);
       p.name = csv_column_name(r, pr[i], key, "probe", taken);
-      p.position = r.vector(r.required(pr[i], key, "position"), key + ".position", D, " (m)");
-      for (int k = 0; k < D; ++k)
-        if (p.position[k] < s.domain.min[k] || p.position[k] > s.domain.max[k])
-          r.fail(pr[i]["position"], key + ".position", "the probe lies outside the domain");
+      p.position = point_in_domain(r, pr[i], key, " (m)", "the probe", s);
       s.probes.push_back(p);
     }
   }
@@ -101,10 +106,7 @@ void read_wall_sensors(const Reader& r, YAML::Node& root, Scene& s) {
     std::vector<std::string> taken;
     for (const WallSensor& q : s.wall_sensors) taken.push_back(q.name);
     w.name = csv_column_name(r, ws[i], key, "wall sensor", taken);
-    w.position = r.vector(r.required(ws[i], key, "position"), key + ".position", D, " (m, the centre of the sensor's face)");
-    for (int k = 0; k < D; ++k)
-      if (w.position[k] < s.domain.min[k] || w.position[k] > s.domain.max[k])
-        r.fail(ws[i]["position"], key + ".position", "the sensor lies outside the domain");
+    w.position = point_in_domain(r, ws[i], key, " (m, the centre of the sensor's face)", "the sensor", s);
     w.normal = r.vector(r.required(ws[i], key, "normal"), key + ".normal", D, " (the wall's normal out of the fluid)");
     double len = 0;
     for (int k = 0; k < D; ++k) len += w.normal[k] * w.normal[k];
