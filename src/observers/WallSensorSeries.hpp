@@ -1,7 +1,7 @@
 #pragma once
-// wall_sensors.csv: the pressure of each wall sensor (wall_sensors:), the NFM wall pressure
-// P_p (4.14) with its MUSCL state (4.30) averaged over the sensor's face
-// (solver/measures/WallLoads.hpp); posts each as "wall_sensor:NAME" for the observers after it.
+// wall_sensors.csv: the pressure of each wall sensor (wall_sensors:), the NFM wall state's
+// pressure P_f (4.30)-(4.32) averaged over the sensor's face (solver/measures/WallLoads.hpp);
+// posts each as "wall_sensor:NAME" for the observers after it.
 #include "observers/SeriesObserver.hpp"
 
 namespace ondine {

@@ -60,18 +60,20 @@ WallTractions<D> wall_tractions(Simulation<D>& sim) {
   return tractions_at(sim, sim.walls().points());
 }
 
+// A sample point of a wall sensor's face: position, normal, area weight, the sensor's index.
+template <int D>
+struct WallSensorSample {
+  Vec<D> x, n;
+  double s;
+  int sensor;
+};
+
 // The sample points of the wall sensors (Scene::WallSensor): per sensor an m x m grid (m
 // points along a segment in 2D) at the centres of equal pieces of its face, m = size / (dx/4)
-// rounded up, between 1 and 8, each weighted by its piece's area (1 for a point sensor); the
-// normal is the sensor's, the wall velocity zero; `wall` holds the sensor's index.
+// rounded up, between 1 and 8, each weighted by its piece's area (1 for a point sensor).
 template <int D>
-WallPoints<D> wall_sensor_points(const Scene& scene) {
-  struct Sample {
-    Vec<D> x, n;
-    double s;
-    int sensor;
-  };
-  std::vector<Sample> pts;
+std::vector<WallSensorSample<D>> wall_sensor_samples(const Scene& scene) {
+  std::vector<WallSensorSample<D>> pts;
   for (std::size_t k = 0; k < scene.wall_sensors.size(); ++k) {
     const WallSensor& w = scene.wall_sensors[k];
     Vec<D> c, n, t1 = Vec<D>::zero(), t2 = Vec<D>::zero();
@@ -79,14 +81,17 @@ WallPoints<D> wall_sensor_points(const Scene& scene) {
     if constexpr (D == 2) {
       t1[0] = -n[1], t1[1] = n[0];
     } else {
+      const auto cross = [](const Vec<D>& a, const Vec<D>& b) {
+        return Vec<D>{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+      };
       int least = 0;  // the axis least aligned with n
       for (int a = 1; a < 3; ++a)
         if (std::abs(n[a]) < std::abs(n[least])) least = a;
       Vec<D> e = Vec<D>::zero();
       e[least] = 1.0;
-      const Vec<D> a1{n[1] * e[2] - n[2] * e[1], n[2] * e[0] - n[0] * e[2], n[0] * e[1] - n[1] * e[0]};
+      const Vec<D> a1 = cross(n, e);
       t1 = (1.0 / std::sqrt(norm2(a1))) * a1;
-      t2 = Vec<D>{n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2], n[0] * t1[1] - n[1] * t1[0]};
+      t2 = cross(n, t1);
     }
     const int m = w.size > 0 ? std::clamp(static_cast<int>(std::ceil(w.size / (0.25 * scene.dx))), 1, 8) : 1;
     const double piece = w.size > 0 ? w.size / m : 0.0, s = w.size > 0 ? std::pow(piece, D - 1) : 1.0;
@@ -96,6 +101,12 @@ WallPoints<D> wall_sensor_points(const Scene& scene) {
         pts.push_back({c + u * t1 + v * t2, n, s, static_cast<int>(k)});
       }
   }
+  return pts;
+}
+
+// The samples as wall points for WallTraction: the wall velocity zero, no viscous part
+template <int D>
+WallPoints<D> wall_points_of(const std::vector<WallSensorSample<D>>& pts) {
   const int nq = static_cast<int>(pts.size());
   WallPoints<D> p;
   p.count = nq;
@@ -128,21 +139,18 @@ WallPoints<D> wall_sensor_points(const Scene& scene) {
 // A point with no particle within R reads 0 (a dry sensor).
 template <int D>
 std::vector<double> wall_sensor_pressures(Simulation<D>& sim) {
-  const WallPoints<D> points = wall_sensor_points<D>(sim.scene());
-  const int nq = points.count, ns = static_cast<int>(sim.scene().wall_sensors.size());
+  const std::vector<WallSensorSample<D>> pts = wall_sensor_samples<D>(sim.scene());
+  const int ns = static_cast<int>(sim.scene().wall_sensors.size());
   std::vector<double> load(ns, 0.0), area(ns, 0.0);
-  if (nq == 0) return load;
-  const WallTractions<D> t = tractions_at(sim, points, true);
+  if (pts.empty()) return load;
+  const WallTractions<D> t = tractions_at(sim, wall_points_of(pts), true);
   const auto ht = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), t.traction);
   const auto hc = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), t.counted);
-  const auto hn = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.n_out);
-  const auto hs = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.s);
-  const auto hw = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), points.wall);
-  for (int q = 0; q < nq; ++q) {  // the sensors' few sample points, not particles
-    if (!hc(q)) continue;
-    for (int k = 0; k < D; ++k) load[hw(q)] += ht(q, k) * hn(q, k);
+  for (std::size_t q = 0; q < pts.size(); ++q) {  // the sensors' few sample points, not particles
+    area[pts[q].sensor] += pts[q].s;
+    if (hc(q))
+      for (int k = 0; k < D; ++k) load[pts[q].sensor] += ht(q, k) * pts[q].n[k];
   }
-  for (int q = 0; q < nq; ++q) area[hw(q)] += hs(q);
   sim.comm().sum_in_place(load);
   for (int k = 0; k < ns; ++k) load[k] = area[k] > 0 ? load[k] / area[k] : 0.0;
   return load;
