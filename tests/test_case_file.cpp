@@ -170,6 +170,13 @@ TEST_CASE("Bad case files get a message naming file, line and key", "[unit][case
     REQUIRE(error_of(moving).empty());
     CHECK_THAT(error_of(moving + ok), Contains("wall_sensors") && Contains("move"));
   }
+  SECTION("the wall quadrature's spacing in metres or in dx, not both") {
+    CHECK(error_of(replace(good, "  R_over_dx: 3.0", "  R_over_dx: 3.0\n  wall_quadrature_spacing_dx: 0.8")).empty());
+    CHECK_THAT(error_of(replace(good, "  R_over_dx: 3.0", "  R_over_dx: 3.0\n  wall_quadrature_spacing_dx: 0")),
+               Contains("cases/box.yaml:") && Contains("discretisation.wall_quadrature_spacing_dx") && Contains("positive"));
+    CHECK_THAT(error_of(replace(good, "  R_over_dx: 3.0", "  R_over_dx: 3.0\n  wall_quadrature_spacing: 0.01\n  wall_quadrature_spacing_dx: 0.8")),
+               Contains("cases/box.yaml:") && Contains("discretisation.wall_quadrature_spacing_dx") && Contains("not both"));
+  }
   SECTION("not YAML at all") {
     const auto m = error_of("dimension: [2\n");
     CHECK_THAT(m, Contains("cases/box.yaml:") && Contains("not valid YAML"));
