@@ -26,14 +26,14 @@ using validate::catalogue;
 using validate::fmt;
 using validate::group_of;
 
-// --case: no --case: the accuracy cases; stability, apr, open: that group; all: all of them;
-// or case names
+// --case: no --case: the accuracy cases; stability, apr, open, fine: that group; all: all of
+// them but the fine group (hours on a CPU, minutes on a GPU); or case names
 std::vector<const ValidationCase*> chosen_cases(const ValidateOptions& opt) {
   auto asked = [&](const std::string& n) { return std::find(opt.cases.begin(), opt.cases.end(), n) != opt.cases.end(); };
   std::vector<const ValidationCase*> chosen;
   for (const ValidationCase& c : catalogue()) {
     const std::string g = group_of(c.name);
-    if ((opt.cases.empty() && g == "accuracy") || asked("all") || asked(g) || asked(c.name)) chosen.push_back(&c);
+    if ((opt.cases.empty() && g == "accuracy") || (asked("all") && g != "fine") || asked(g) || asked(c.name)) chosen.push_back(&c);
   }
   return chosen;
 }
@@ -205,6 +205,7 @@ std::map<std::string, double> run_rung(const ValidateOptions& opt, const Validat
   run["commit"] = report.commit;
   run["date"] = report.date;
   run["threads"] = report.threads;
+  run["device"] = report.device;
   run["sets"] = sets;
   run["reference_velocity"] = scale.u_ref;
   run["rho0"] = scale.rho0;
@@ -298,6 +299,7 @@ int run_validation(const ValidateOptions& opt) {
   report.commit = ONDINE_SOURCE_COMMIT;
   report.date = validate::utc_now();
   report.threads = backend_threads();
+  report.device = device_name();
   report.j["level"] = opt.level;
   report.j["flux"] = opt.flux;
   report.j["transport"] = opt.transport;

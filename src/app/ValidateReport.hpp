@@ -46,6 +46,7 @@ struct Report {
   bool all_passed = true;
   std::string commit, date;  // the binary's source commit (cmake/SourceCommit.cmake); when the runs started (UTC)
   int threads = 0;           // the backend's threads
+  std::string device = "host";  // the GPU's name where the runs took place on one
 };
 
 // The current time, UTC, as 2026-11-25T10:00:00Z.

@@ -1,6 +1,9 @@
 #include "run/BuildInfo.hpp"
 
 #include <Kokkos_Core.hpp>
+#ifdef KOKKOS_ENABLE_CUDA
+#include <cuda_runtime.h>
+#endif
 
 namespace ondine {
 
@@ -33,5 +36,14 @@ std::vector<std::string> kokkos_backends() {
 
 std::string default_backend() { return Kokkos::DefaultExecutionSpace::name(); }
 int backend_threads() { return Kokkos::DefaultExecutionSpace().concurrency(); }
+
+std::string device_name() {
+#ifdef KOKKOS_ENABLE_CUDA
+  int device = 0;
+  cudaDeviceProp prop;
+  if (cudaGetDevice(&device) == cudaSuccess && cudaGetDeviceProperties(&prop, device) == cudaSuccess) return prop.name;
+#endif
+  return "host";
+}
 
 }  // namespace ondine

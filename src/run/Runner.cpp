@@ -163,6 +163,7 @@ nlohmann::json run_summary(const Scene& scene, const RunOptions& opt, const Simu
   j["neighbour_list_builds"] = sim.domain().builds();
   j["backend"] = default_backend();
   j["threads"] = backend_threads();
+  j["device"] = device_name();
   j["ranks"] = comm.size();
   j["parallel"] = {{"balance_tau", sim.domain().balance()},
                    {"rebalances", sim.domain().rebalances()},

@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# Runs the CUDA build of Ondine from a bundle (perf/gpu/bundle.sh) on a GPU machine, within
+# a time budget, each step under its own time limit, and packs what the steps wrote:
+#   perf/gpu/check.sh BUNDLE OUT_DIR BUDGET_S [STEP...]
+# Steps (in the order given; default: info smoke test2 bench unit pairbench):
+#   info      the GPU (nvidia-smi) and `ondine --version`
+#   smoke     the shipped 2D dam break (cases/dam_break_2d.yaml), timed
+#   test2     `ondine validate --case spheric_test2_3d --level full` (dx = 0.05, 0.04 m)
+#   test2_fine SPHERIC Test 2 at dx = 0.02 m to 2 s with --profile (kernel times)
+#   bench     perf/ondine_bench --quick (the pair rate)
+#   unit      the unit tests (ondine_tests "[unit]")
+#   pairbench the hand-written OpenMP pair loop on the machine's cores (the yardstick)
+# OUT_DIR gets log.txt, steps.json (each step's status and seconds) and results.tar.gz
+# (the runs' JSON, CSV and figures, no snapshots).
+set -u
+bundle=${1:?usage: check.sh BUNDLE OUT_DIR BUDGET_S [STEP...]}
+out=${2:?}
+budget=${3:?}
+shift 3
+steps=("$@")
+[ ${#steps[@]} -eq 0 ] && steps=(info smoke test2 bench unit pairbench)
+cd "$(dirname "$0")/../.."
+start=$(date +%s)
+mkdir -p "$out"
+log="$out/log.txt"
+work=/tmp/ondine-gpu
+rm -rf "$work"; mkdir -p "$work/runs"
+tar -C "$work" -xJf "$bundle" || { echo "check.sh: cannot unpack $bundle" | tee -a "$log"; exit 1; }
+export LD_LIBRARY_PATH="$work/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+# Open MPI from the bundle: its components and messages, one process without mpirun
+export OMPI_MCA_mca_base_component_path="$work/ompi" OPAL_PKGLIBDIR="$work/ompi" OPAL_PKGDATADIR="$work/share/openmpi"
+export OMPI_MCA_ess_singleton_isolated=1 OMPI_MCA_pml=ob1 OMPI_MCA_btl=self,vader
+export PMIX_MCA_mca_base_component_path="$work/pmix"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export CUDA_CACHE_MAXSIZE=4294967296
+bin="$work/bin"
+echo "{" > "$out/steps.json"
+first=1
+record() {  # name status seconds
+  [ $first -eq 1 ] || echo "," >> "$out/steps.json"
+  first=0
+  printf '  "%s": {"status": %s, "seconds": %s}' "$1" "$2" "$3" >> "$out/steps.json"
+}
+step() {  # name limit command...
+  local name=$1 limit=$2; shift 2
+  local left=$(( budget - ($(date +%s) - start) - 15 ))
+  [ $left -lt $limit ] && limit=$left
+  if [ $limit -lt 5 ]; then echo "== $name: skipped (budget)" >> "$log"; record "$name" '"skipped"' 0; return; fi
+  echo "== $name (limit ${limit} s): $*" >> "$log"
+  local t0=$(date +%s.%N)
+  timeout -k 5 "$limit" "$@" >> "$log" 2>&1
+  local rc=$? t1=$(date +%s.%N)
+  local dt=$(awk -v a="$t0" -v b="$t1" 'BEGIN{printf "%.2f", b-a}')
+  echo "== $name: exit $rc in $dt s" >> "$log"
+  record "$name" "$rc" "$dt"
+}
+for s in "${steps[@]}"; do
+  case $s in
+    info)
+      step info 30 bash -c "nvidia-smi --query-gpu=name,driver_version,memory.total,clocks.max.sm,clocks.max.mem --format=csv; nproc; cat $work/commit; $bin/ondine --version" ;;
+    smoke)
+      step smoke 90 "$bin/ondine" run cases/dam_break_2d.yaml --out "$work/runs/dam_break_2d" --quiet ;;
+    test2)
+      step test2 240 "$bin/ondine" validate --case spheric_test2_3d --level full --out "$work/runs/test2" ;;
+    test2_fine)
+      step test2_fine 300 "$bin/ondine" run cases/spheric_test2_3d.yaml --set discretisation.dx=0.02 --profile \
+        --out "$work/runs/test2_dx0.02" --quiet ;;
+    bench)
+      step bench 90 "$bin/ondine_bench" --quick --out "$work/runs/bench.json" ;;
+    unit)
+      step unit 120 "$bin/ondine_tests" "[unit]" --reporter compact ;;
+    pairbench)
+      if [ -f "$work/pairbench.cpp" ]; then
+        step pairbench 60 bash -c "g++ -O3 -march=native -fopenmp $work/pairbench.cpp -o $work/pairbench && \
+          for r in 1 2 3; do OMP_NUM_THREADS=\$(nproc) OMP_PROC_BIND=spread OMP_PLACES=threads $work/pairbench 300 20; done \
+          | tee $work/runs/pairbench.jsonl"
+      fi ;;
+    *) echo "check.sh: unknown step $s" >> "$log" ;;
+  esac
+done
+echo "}" >> "$out/steps.json"
+(cd "$work/runs" && find . -type f \( -name '*.json' -o -name '*.csv' -o -name '*.md' -o -name '*.png' -o -name '*.jsonl' \) \
+  -size -20M | tar -czf "$out/results.tar.gz" -T -)
+echo "check.sh: done in $(( $(date +%s) - start )) s" >> "$log"
