@@ -6,7 +6,8 @@
 #   info      the GPU (nvidia-smi) and `ondine --version`
 #   smoke     the shipped 2D dam break (cases/dam_break_2d.yaml), timed
 #   test2     `ondine validate --case spheric_test2_3d --level full` (dx = 0.05, 0.04 m)
-#   test2_fine SPHERIC Test 2 at dx = 0.02 m to 2 s with --profile (kernel times)
+#   fine      `ondine validate --case spheric_test2_3d_fine --level full` (dx = 0.03, 0.02 m)
+#   profile   SPHERIC Test 2 at dx = 0.03 m to 0.6 s with --profile (each kernel's time)
 #   bench     perf/ondine_bench --quick (the pair rate)
 #   unit      the unit tests (ondine_tests "[unit]")
 #   pairbench the hand-written OpenMP pair loop on the machine's cores (the yardstick)
@@ -61,10 +62,12 @@ for s in "${steps[@]}"; do
     smoke)
       step smoke 90 "$bin/ondine" run cases/dam_break_2d.yaml --out "$work/runs/dam_break_2d" --quiet ;;
     test2)
-      step test2 240 "$bin/ondine" validate --case spheric_test2_3d --level full --out "$work/runs/test2" ;;
-    test2_fine)
-      step test2_fine 300 "$bin/ondine" run cases/spheric_test2_3d.yaml --set discretisation.dx=0.02 --profile \
-        --out "$work/runs/test2_dx0.02" --quiet ;;
+      step test2 150 "$bin/ondine" validate --case spheric_test2_3d --level full --out "$work/runs/test2" ;;
+    fine)
+      step fine 300 "$bin/ondine" validate --case spheric_test2_3d_fine --level full --out "$work/runs/fine" ;;
+    profile)
+      step profile 90 "$bin/ondine" run cases/spheric_test2_3d.yaml --set discretisation.dx=0.03 --set time.duration=0.6 \
+        --profile --out "$work/runs/profile_dx0.03" --quiet ;;
     bench)
       step bench 90 "$bin/ondine_bench" --quick --out "$work/runs/bench.json" ;;
     unit)
