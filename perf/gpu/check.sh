@@ -6,7 +6,8 @@
 #   info      the GPU (nvidia-smi) and `ondine --version`
 #   smoke     the shipped 2D dam break (cases/dam_break_2d.yaml), timed
 #   test2     `ondine validate --case spheric_test2_3d --level full` (dx = 0.05, 0.04 m)
-#   fine      `ondine validate --case spheric_test2_3d_fine --level full` (dx = 0.03, 0.02 m)
+#   fine      `ondine validate --case fine_spheric_test2_3d --level full` (dx = 0.03, 0.02 m)
+#   thesis    `ondine validate --case fine_spheric_test2_3d_thesis --level full` (dx = 0.015, 0.01 m)
 #   profile   SPHERIC Test 2 at dx = 0.03 m to 0.6 s with --profile (each kernel's time)
 #   bench     perf/ondine_bench --quick (the pair rate)
 #   unit      the unit tests (ondine_tests "[unit]")
@@ -64,7 +65,9 @@ for s in "${steps[@]}"; do
     test2)
       step test2 150 "$bin/ondine" validate --case spheric_test2_3d --level full --out "$work/runs/test2" ;;
     fine)
-      step fine 300 "$bin/ondine" validate --case spheric_test2_3d_fine --level full --out "$work/runs/fine" ;;
+      step fine 120 "$bin/ondine" validate --case fine_spheric_test2_3d --level full --out "$work/runs/fine" ;;
+    thesis)
+      step thesis 420 "$bin/ondine" validate --case fine_spheric_test2_3d_thesis --level full --out "$work/runs/thesis" ;;
     profile)
       step profile 90 "$bin/ondine" run cases/spheric_test2_3d.yaml --set discretisation.dx=0.03 --set time.duration=0.6 \
         --profile --out "$work/runs/profile_dx0.03" --quiet ;;
