@@ -17,6 +17,10 @@ BUILD_CUDA  ?= build-cuda
 CUDA_ROOT   ?= $(if $(ONDINE_CUDA_ROOT),$(ONDINE_CUDA_ROOT),/usr/local/cuda)
 KOKKOS_CUDA ?= $(CURDIR)/.deps/kokkos-cuda
 CUDA_CMAKE_ARGS ?=
+# CUDA_ARCH=sm_90: Ondine's kernels built for that architecture (the H100/H200's own code)
+# instead of sm_80 + PTX, through scripts/make-nvcc-arch-wrapper.sh; use its own BUILD_CUDA
+CUDA_ARCH   ?=
+CUDA_CXX     = $(if $(CUDA_ARCH),$(CURDIR)/$(BUILD_CUDA)/nvcc_wrapper_$(CUDA_ARCH),$(KOKKOS_CUDA)/bin/nvcc_wrapper)
 
 all: build
 
@@ -58,7 +62,8 @@ setup-cuda: setup
 	@ONDINE_CUDA_ROOT="$(CUDA_ROOT)" scripts/setup-kokkos-cuda.sh
 
 $(BUILD_CUDA)/CMakeCache.txt: | setup-cuda
-	cmake -S . -B $(BUILD_CUDA) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER="$(KOKKOS_CUDA)/bin/nvcc_wrapper" \
+	$(if $(CUDA_ARCH),scripts/make-nvcc-arch-wrapper.sh "$(CUDA_CXX)" "$(KOKKOS_CUDA)" "$(CUDA_ARCH)")
+	cmake -S . -B $(BUILD_CUDA) -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER="$(CUDA_CXX)" \
 	  -DCMAKE_PREFIX_PATH="$(KOKKOS_CUDA)" $(CUDA_CMAKE_ARGS)
 
 cuda: setup-cuda $(BUILD_CUDA)/CMakeCache.txt

@@ -12,6 +12,8 @@
 #   bench     perf/ondine_bench --quick (the pair rate)
 #   unit      the unit tests (ondine_tests "[unit]")
 #   pairbench the hand-written OpenMP pair loop on the machine's cores (the yardstick)
+#   run:NAME,ARG,...  SPHERIC Test 2 with these `ondine run` arguments (commas for spaces),
+#             e.g. run:dx015,--set,discretisation.dx=0.015 (limit 150 s)
 # OUT_DIR gets log.txt, steps.json (each step's status and seconds) and results.tar.gz
 # (the runs' JSON, CSV and figures, no snapshots).
 set -u
@@ -81,6 +83,9 @@ for s in "${steps[@]}"; do
           for r in 1 2 3; do OMP_NUM_THREADS=\$(nproc) OMP_PROC_BIND=spread OMP_PLACES=threads $work/pairbench 300 20; done \
           | tee $work/runs/pairbench.jsonl"
       fi ;;
+    run:*)
+      IFS=, read -r -a args <<< "${s#run:}"
+      step "${args[0]}" 150 "$bin/ondine" run cases/spheric_test2_3d.yaml --quiet --out "$work/runs/${args[0]}" "${args[@]:1}" ;;
     *) echo "check.sh: unknown step $s" >> "$log" ;;
   esac
 done
