@@ -80,15 +80,21 @@ def schemes_md(runs):
              "| case | resolution | error | " + " | ".join(labels) + " |", "|---|---|---|" + "---|" * len(labels)] + md + [""])
 
 
+def where(run):
+    """What the run's times were measured on: the GPU's name, else the host's threads."""
+    device = run.get("device", "host")
+    return device if device != "host" else run.get("threads", "?")
+
+
 def report_md(record, figures):
     runs = record["runs"]
     md = ["# Validation (the record)", "",
-          "| case | scheme | level | resolution | particles | steps | threads | wall s | particle-steps/s | errors | passed |",
+          "| case | scheme | level | resolution | particles | steps | threads or GPU | wall s | particle-steps/s | errors | passed |",
           "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in runs:
         md.append(f"| {r['case']} | {scheme_label(r)} | {r.get('level', 'full')} | {fmt(r['resolution'])}"
                   + (f" ({r['variant']})" if r.get("variant") else "")
-                  + f" | {r['particles']} | {r['steps']} | {r.get('threads', '?')} | {fmt(r['wall_seconds'])} | "
+                  + f" | {r['particles']} | {r['steps']} | {where(r)} | {fmt(r['wall_seconds'])} | "
                   f"{fmt(r.get('particle_steps_per_second', 0))} | {errors_text(r)} | {'yes' if r['passed'] else '**no**'} |")
     md.append("")
     md += schemes_md(runs)
