@@ -7,6 +7,7 @@
 
 #include "kernels/StateCheck.hpp"
 #include "parallel/Communicator.hpp"
+#include "particles/HostRow.hpp"
 #include "particles/ParticleSet.hpp"
 #include "scene/Scene.hpp"
 
@@ -33,31 +34,11 @@ void check_state(ParticleSet<D>& p, int n_own, const Scene& scene, const Communi
   const std::int64_t bad_rank = comm.min(first == INT_MAX ? std::int64_t(comm.size()) : std::int64_t(comm.rank()));
   if (bad_rank == comm.size()) return;
   if (first == INT_MAX) first = 0;
-  // what went wrong, for that one particle: gathered on the device into one small view
-  // (a row of a device view is strided, which Kokkos cannot copy to the host directly)
-  Kokkos::View<double[2 * D + 1], MemSpace> state("ondine::StateCheck::particle");
-  Kokkos::View<std::int64_t[1], MemSpace> gid("ondine::StateCheck::id");
-  {
-    const auto X = p.get(field::Position{});
-    const auto U = p.get(field::Velocity{});
-    const auto R = p.get(field::Density{});
-    const auto G = p.get(field::GlobalId{});
-    const int i = first;
-    Kokkos::parallel_for("ondine::StateCheck::read", Kokkos::RangePolicy<ExecSpace>(0, 1), KOKKOS_LAMBDA(const int) {
-      for (int k = 0; k < D; ++k) {
-        state(k) = X(i, k);
-        state(D + k) = U(i, k);
-      }
-      state(2 * D) = R(i);
-      gid(0) = G(i);
-    });
-  }
-  const auto hs = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), state);
-  const auto hid = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), gid);
-  auto x = [&](int k) { return hs(k); };
-  auto u = [&](int k) { return hs(D + k); };
-  auto r = [&]() { return hs(2 * D); };
-  auto id = [&]() { return hid(0); };
+  // what went wrong, read from the host for that one particle
+  const auto x = row_to_host(p.get(field::Position{}), first);
+  const auto u = row_to_host(p.get(field::Velocity{}), first);
+  const auto r = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), Kokkos::subview(p.get(field::Density{}), first));
+  const auto id = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), Kokkos::subview(p.get(field::GlobalId{}), first));
   std::ostringstream m;
   m << "blow-up at step " << steps + 1 << ", t = " << t + dt << " s: particle " << id() << " (at";
   for (int k = 0; k < D; ++k) m << " " << x(k);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "particles/HostRow.hpp"
 #include "solver/hooks/Refinement.hpp"
 
 namespace ondine {
@@ -39,7 +40,7 @@ void Refinement<D>::step_start(StepState<D>& s) {
     std::vector<double> mine(D + 1, 0.0);
     mine[0] = best.val > 0 ? best.val : -1.0;
     if (best.val > 0) {
-      auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), Kokkos::subview(x, best.loc, Kokkos::ALL));
+      const auto h = row_to_host(x, best.loc);
       for (int k = 0; k < D; ++k) mine[1 + k] = h(k);
     }
     const std::vector<double> all = comm.gather_all(mine);
