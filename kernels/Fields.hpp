@@ -44,6 +44,12 @@ ONDINE_FIELD_(MassRate, "mass_rate", double, false, false);
 ONDINE_FIELD(ShepardGamma, "shepard_gamma", double, false);
 // Free-surface flag from the NFM renormalisation matrix and normal (4.86)-(4.87): 1 on the surface.
 ONDINE_FIELD(FreeSurface, "free_surface", double, false);
+// Turbulence (src/solver/hooks/EddyViscosity.hpp): the eddy viscosity nu_T of the model
+// (V&I §4.1.1), and next to no-slip walls with the log-law wall function the friction velocity
+// u_* and y+ = y u_* / nu of the nearest wall point; recomputed at every stage.
+ONDINE_FIELD(EddyViscosity, "eddy_viscosity", double, false);
+ONDINE_FIELD(FrictionVelocity, "friction_velocity", double, false);
+ONDINE_FIELD(YPlus, "y_plus", double, false);
 // Integrator stage storage (not written to snapshots): the state y0 at the start
 // of the step and the RK4 weighted sum of the stage derivatives. Particle fields,
 // so that they follow a particle that changes rank in the middle of a step.

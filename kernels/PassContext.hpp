@@ -9,6 +9,7 @@
 #include "kernels/VelocityGradientSum.hpp"
 #include "kernels/WallPressure.hpp"
 #include "kernels/WallSet.hpp"
+#include "kernels/turbulence/EddyViscosityPass.hpp"
 #include "kernels/apr/RefinementZones.hpp"
 
 namespace ondine {
@@ -54,6 +55,12 @@ struct PassContext {
   WallEos eos{1, 1, 1};            // c(rho) of (1.9): the wall pressure (4.14) and Riemann-SPH
   double nu = 0, rho0 = 0;         // the scene's viscosity (the wall terms have their own quadrature)
   double morris_factor = 1;
+  // turbulence (src/solver/hooks/EddyViscosity.hpp): nu_T, and with the wall function u_* and y+
+  field_view_t<field::EddyViscosity, D> nu_T;
+  field_view_t<field::FrictionVelocity, D> u_star;
+  field_view_t<field::YPlus, D> y_plus;
+  MixingLength<D> mixing_length;  // L(x) of the model at this level's spacing
+  LogLaw log_law;
   double clearance = 0;            // dx / 2 of the level: the wall-ward correction acts closer than this
   bool velocity_muscl = false;     // scheme.wall_velocity_reconstruction: the MUSCL state of u (4.30)
   bool wall_state_only = false;    // wall tractions: the MUSCL state's pressure alone, no rho c u_n (wall sensors)

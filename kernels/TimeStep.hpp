@@ -43,3 +43,15 @@ struct MaxComponent {
   }
 };
 }  // namespace ondine
+
+namespace ondine {
+// max_i v(i) of a scalar field (the eddy viscosity's bound on the step)
+template <class ScalarView>
+struct MaxValue {
+  using value_type = double;
+  ScalarView v;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, double& mx) const {
+    if (v(i) > mx) mx = v(i);
+  }
+};
+}  // namespace ondine

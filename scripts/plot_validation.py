@@ -156,9 +156,13 @@ def solution_panel(ax, out, src, case, rs):
             ax.set_title("surge front")
         elif prof and "u_exact" in prof:
             ax.plot(prof["u"], prof["y"], ".", ms=2, label=lab)
+            log_law = case.startswith("turbulent")  # reference.type log_law: the law on a log height axis
             if last:
                 pts = sorted(zip(prof["y"], prof["u_exact"]))
-                ax.plot([p[1] for p in pts], [p[0] for p in pts], "k-", lw=1, label="start-up series (Morris 1997)")
+                ax.plot([p[1] for p in pts], [p[0] for p in pts], "k-", lw=1,
+                        label="log law, u* = sqrt(F H)" if log_law else "start-up series (Morris 1997)")
+            if log_law:
+                ax.set_yscale("log")
             ax.set_xlabel("u (m/s)")
             ax.set_ylabel("y (m)")
             ax.set_title("velocity profile")

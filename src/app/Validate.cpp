@@ -26,7 +26,7 @@ using validate::catalogue;
 using validate::fmt;
 using validate::group_of;
 
-// --case: no --case: the accuracy cases; stability, apr, open, fine: that group; all: all of
+// --case: no --case: the accuracy cases; stability, apr, open, fine, turbulence: that group; all: all of
 // them but the fine group (hours on a CPU, minutes on a GPU); or case names
 std::vector<const ValidationCase*> chosen_cases(const ValidateOptions& opt) {
   auto asked = [&](const std::string& n) { return std::find(opt.cases.begin(), opt.cases.end(), n) != opt.cases.end(); };

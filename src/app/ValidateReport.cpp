@@ -9,6 +9,7 @@
 
 #include "io/AtomicFile.hpp"
 #include "io/SnapshotWriter.hpp"
+#include "kernels/turbulence/LogLaw.hpp"
 #include "observers/ChannelReference.hpp"
 #include "reference/References.hpp"
 
@@ -58,6 +59,17 @@ bool write_snapshot_profile(const Scene& s, const std::string& dir, std::ostring
     for (std::size_t i = 0; i < d.particles; ++i) {
       const double y = x[3 * i + 1] - o0[1];
       o << y << "," << u[3 * i] << "," << channel_startup(s, y, d.time) << "\n";
+    }
+  } else if (kind == ReferenceKind::LogLaw) {
+    // every particle's u against the law with u_* = sqrt(F H) (observers/ErrorNormsImpl.hpp, log_law)
+    const Turbulence& tu = s.turbulence;
+    const LogLaw law = LogLaw::make(tu.kappa, s.nu, tu.smooth_constant, tu.wall_function == WallLaw::Rough ? tu.roughness : 0.0,
+                                    tu.rough_constant);
+    const double us = std::sqrt((s.body_force[0] + s.gravity[0]) * L);
+    o << "y,u,u_exact\n";
+    for (std::size_t i = 0; i < d.particles; ++i) {
+      const double y = x[3 * i + 1] - o0[1];
+      if (y > 0) o << y << "," << u[3 * i] << "," << law.speed(us, y) << "\n";
     }
   } else if (kind == ReferenceKind::OpenChannel) {
     // the particles within dx/2 of the measured section, against the parabola of the inlet's mean
@@ -184,7 +196,7 @@ void write_profile(const Scene& s, const std::string& dir) {
   if (tg) {
     write_taylor_green_profile(s, dir, o);
   } else if (kind == ReferenceKind::Poiseuille || kind == ReferenceKind::Couette || kind == ReferenceKind::OpenChannel ||
-             kind == ReferenceKind::Hydrostatic ||
+             kind == ReferenceKind::LogLaw || kind == ReferenceKind::Hydrostatic ||
              kind == ReferenceKind::GhiaRe100 || kind == ReferenceKind::GhiaRe1000) {
     if (!write_snapshot_profile(s, dir, o)) return;
   } else {

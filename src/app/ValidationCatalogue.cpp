@@ -209,6 +209,13 @@ const std::vector<ValidationCase>& catalogue() {
       {"open_channel_2d", "cases/open_channel_2d.yaml", 1.0, {{0.1, false, false}, {0.05, false}, {0.025, true}},
        stable({{"mean_velocity_error", 0.05}, {"profile_linf", 0.03}, {"pressure_gradient_error", 0.1}, {"open_mass_balance", 1e-12}}),
        {}, {}, {"wall_leaks"}},
+      // Turbulence (`--case turbulence`, V&I §4.1.1, digest V5): the open channel with the mixing
+      // length and the smooth log-law wall function (cases/turbulent_channel_2d.yaml, Re_* = 1.04e4),
+      // 20 s from a uniform start at the law's depth mean: u against the law with u_* = sqrt(F H) in
+      // the log layer, and the wall function's u_* against sqrt(F H). Resolution: particles per depth
+      {"turbulent_channel_2d", "cases/turbulent_channel_2d.yaml", 1.0, {{0.05, false}, {0.025, true}, {0.0125, true}},
+       stable({{"velocity_l2", 0.03}, {"friction_velocity_error", 0.03}, {"wall_leaks", 0.5}}),
+       {}, {}, {"velocity_l2_near_bed", "y_plus_first_row"}},
       {"cylinder_re100_2d", "cases/cylinder_re100_2d.yaml", 0.1, {{0.01, false, false}, {0.004, true}},
        stable({{"cd_error", 0.3}, {"cl_amplitude_error", 0.1}, {"strouhal_error", 0.1}, {"open_mass_balance", 1e-12}}),
        {"time.duration=4.5", "reference.from=2.5"}, {}, {"cd_mean", "cl_amplitude", "strouhal", "shedding_periods"}},
@@ -216,13 +223,13 @@ const std::vector<ValidationCase>& catalogue() {
   return c;
 }
 
-// The group of a case: stability (the stability suite), apr (the APR comparisons), open (open
-// boundaries) or accuracy (the accuracy ladders, what validate runs without --case)
+// The group of a case (ValidationCatalogue.hpp)
 std::string group_of(const std::string& n) {
   if (n.rfind("stability", 0) == 0) return "stability";
   if (n.rfind("apr_", 0) == 0) return "apr";
   if (n.rfind("cylinder_", 0) == 0 || n.rfind("open_", 0) == 0) return "open";
   if (n.rfind("fine_", 0) == 0) return "fine";
+  if (n.rfind("turbulent_", 0) == 0) return "turbulence";
   return "accuracy";
 }
 

@@ -11,8 +11,9 @@ namespace ondine::validate {
 // every case, in the order validate runs them
 const std::vector<ValidationCase>& catalogue();
 
-// stability (the stability suite), apr (the APR comparisons), open (open boundaries) or
-// accuracy (the accuracy ladders, what validate runs without --case)
+// stability (the stability suite), apr (the APR comparisons), open (open boundaries), fine
+// (SPHERIC Test 2 at fine resolution), turbulence (the turbulence models) or accuracy (the
+// accuracy ladders, what validate runs without --case)
 std::string group_of(const std::string& name);
 
 }  // namespace ondine::validate

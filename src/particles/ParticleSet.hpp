@@ -22,6 +22,7 @@ class ParticleSet {
                             field::DensityGradient, field::VelocityGradientX, field::VelocityGradientY,
                             field::VelocityGradientZ, field::ShepardGamma, field::FreeSurface,
                             field::TransportCorrection, field::MassRate, field::OpenRole,
+                            field::EddyViscosity, field::FrictionVelocity, field::YPlus,
                             field::AprLevel, field::AprBirthLevel, field::AprGuard, field::AprMother, field::AprParent,
                             field::StagePosition, field::StageVelocity, field::StageDensity,
                             field::StagePositionSum, field::StageVelocitySum, field::StageDensitySum,

@@ -39,7 +39,7 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
 
   r.only_keys(root, "", {"name", "dimension", "domain", "fluid", "discretisation", "fluid_blocks", "walls", "forces",
                          "scheme", "time", "probes", "wall_sensors", "wave_gauges", "reference", "parallel", "checkpoint",
-                         "refinement", "open_boundaries"});
+                         "refinement", "open_boundaries", "turbulence"});
   Scene s;
   s.source_file = path;
   read_name_and_dimension(r, root, path, s);
@@ -50,6 +50,7 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
   read_walls(r, root, path, s);
   read_forces(r, root, s);
   read_scheme(r, root, s);
+  read_turbulence(r, root, s);
   check_viscosity(r, root, s);
   check_flux_scheme(r, root, s);
   read_sound_speed(r, root, s);

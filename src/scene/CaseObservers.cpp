@@ -137,9 +137,10 @@ void read_reference(const Reader& r, YAML::Node& root, Scene& s) {
     r.only_keys(rf, "reference", {"type", "length", "origin", "velocity", "file", "wall", "from"});
     const std::string t = r.word(r.required(rf, "reference", "type"), "reference.type",
                                  {"poiseuille", "couette", "hydrostatic", "martin_moyce", "ghia_re100", "ghia_re1000", "duct",
-                                  "spheric_test2", "cylinder", "open_channel"});
+                                  "spheric_test2", "cylinder", "open_channel", "log_law"});
     s.reference.kind = t == "cylinder"     ? ReferenceKind::Cylinder
                        : t == "open_channel" ? ReferenceKind::OpenChannel
+                       : t == "log_law"      ? ReferenceKind::LogLaw
                        : t == "duct"         ? ReferenceKind::Duct
                        : t == "spheric_test2" ? ReferenceKind::SphericTest2
                        : t == "poiseuille" ? ReferenceKind::Poiseuille
@@ -160,6 +161,12 @@ void read_reference(const Reader& r, YAML::Node& root, Scene& s) {
     if ((s.reference.kind == ReferenceKind::Poiseuille || s.reference.kind == ReferenceKind::Couette ||
          s.reference.kind == ReferenceKind::OpenChannel) && !(s.nu > 0))
       r.fail(rf["type"], "reference.type", t + " needs fluid.viscosity > 0");
+    if (s.reference.kind == ReferenceKind::LogLaw) {
+      if (s.turbulence.wall_function == WallLaw::None)
+        r.fail(rf["type"], "reference.type", "log_law compares with the law of turbulence.wall_function, which the case does not set");
+      if (!(s.body_force[0] + s.gravity[0] > 0))
+        r.fail(rf["type"], "reference.type", "log_law needs a driving force along +x (forces.body_force or gravity): u_* = sqrt(F H)");
+    }
     if (s.reference.kind == ReferenceKind::Cylinder) {
       // a body in a stream: its wall, the stream's speed, the start of the averaging
       s.reference.velocity = r.positive(r.required(rf, "reference", "velocity"), "reference.velocity", " (m/s, the stream's speed)");

@@ -184,13 +184,8 @@ void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
     if (sc["time_integrator"])
       s.integrator = r.word(sc["time_integrator"], "scheme.time_integrator", {"rk4", "predictor_corrector"}) == "rk4"
                          ? TimeIntegrator::RK4 : TimeIntegrator::PredictorCorrector;
-    if (sc["density_gradient"]) {
+    if (sc["density_gradient"])
       s.density_gradient_once_per_step = r.word(sc["density_gradient"], "scheme.density_gradient", {"stage", "step"}) == "step";
-      // the consistent Laplacian's weights come out of the same pass and follow the particles next to no-slip walls
-      if (s.density_gradient_once_per_step && uses_consistent_laplacian(s))
-        r.fail(sc["density_gradient"], "scheme.density_gradient",
-               "step is not supported with the consistent Laplacian (scheme.viscous_term morris with no-slip walls), whose weights the gradient pass solves at every stage; use stage, or scheme.consistent_laplacian: false");
-    }
     read_flux(r, sc, s);
     if (const YAML::Node c = sc["cfl"]) {
       r.only_keys(c, "scheme.cfl", {"acoustic", "viscous", "force"});
@@ -201,9 +196,14 @@ void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
   }
 }
 
-// scheme.viscous_term and fluid.viscosity agree
+// scheme.viscous_term and fluid.viscosity agree; the density gradient once per step is not
+// taken with the consistent Laplacian (after the turbulence section, which rules it out)
 void check_viscosity(const Reader& r, YAML::Node& root, const Scene& s) {
   const YAML::Node fl = root["fluid"];
+  // the consistent Laplacian's weights come out of the gradient pass and follow the particles next to no-slip walls
+  if (s.density_gradient_once_per_step && uses_consistent_laplacian(s))
+    r.fail(root["scheme"]["density_gradient"], "scheme.density_gradient",
+           "step is not supported with the consistent Laplacian (scheme.viscous_term morris with no-slip walls), whose weights the gradient pass solves at every stage; use stage, or scheme.consistent_laplacian: false");
   if (s.viscous_term != ViscousTerm::None && !(s.nu > 0))
     r.fail(fl, "fluid.viscosity", "scheme.viscous_term is set, so fluid.viscosity must be > 0");
   if (s.viscous_term == ViscousTerm::None && s.nu > 0)

@@ -36,6 +36,10 @@ void read_parallel(const Reader& r, YAML::Node& root, Scene& s);
 void read_checkpoint(const Reader& r, YAML::Node& root, Scene& s);
 void check_memory(const Reader& r, YAML::Node& root, const Scene& s);
 
+// CaseTurbulence.cpp: the eddy-viscosity models and the log-law wall function (after the
+// scheme and the walls, before the flux scheme's check)
+void read_turbulence(const Reader& r, YAML::Node& root, Scene& s);
+
 // CaseFluidBlocks.cpp: the initial fluid
 void read_fluid_blocks(const Reader& r, YAML::Node& root, Scene& s);
 

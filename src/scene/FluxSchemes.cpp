@@ -13,7 +13,11 @@ FluxKey flux_key(const Scene& s) {
     k.base = s.delta_sph > 0 ? FluxBase::CentredDeltaSph : FluxBase::Centred;
   }
   switch (s.viscous_term) {
-    case ViscousTerm::Morris: k.viscosity = uses_consistent_laplacian(s) ? PairViscosity::ConsistentMorris : PairViscosity::Morris; break;
+    case ViscousTerm::Morris:
+      k.viscosity = s.turbulence.on()                ? PairViscosity::EddyMorris
+                    : uses_consistent_laplacian(s) ? PairViscosity::ConsistentMorris
+                                                   : PairViscosity::Morris;
+      break;
     case ViscousTerm::MonaghanGingold: k.viscosity = PairViscosity::MonaghanGingold; break;
     case ViscousTerm::None: break;
   }
@@ -33,7 +37,7 @@ std::string describe(const FluxKey& k) {
   static const char* const viscosity[] = {
       "scheme.viscous_term: none", "scheme.viscous_term: morris",
       "scheme.viscous_term: morris with scheme.consistent_laplacian: true and a no-slip wall",
-      "scheme.viscous_term: monaghan_gingold"};
+      "scheme.viscous_term: monaghan_gingold", "scheme.viscous_term: morris with a turbulence.model"};
   std::ostringstream o;
   o << base[static_cast<int>(k.base)] << ", " << viscosity[static_cast<int>(k.viscosity)]
     << (k.artificial_viscosity ? ", scheme.artificial_viscosity > 0" : ", scheme.artificial_viscosity: 0")

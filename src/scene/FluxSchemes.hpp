@@ -15,8 +15,9 @@ namespace ondine {
 // the pressure and continuity part: centred (2.47, 2.50), with delta-SPH (2.60), or Riemann-SPH
 // in Leduc's form (2.90-2.101) or Vila's ALE form (2.84-2.89), first order or with MUSCL (2.78)
 enum class FluxBase { Centred, CentredDeltaSph, Leduc, LeducMuscl, Vila, VilaMuscl };
-// the fluid viscous term: Morris (2.54), its consistent form next to no-slip walls, Monaghan-Gingold (2.56)
-enum class PairViscosity { None, Morris, ConsistentMorris, MonaghanGingold };
+// the fluid viscous term: Morris (2.54), its consistent form next to no-slip walls, Monaghan-Gingold (2.56),
+// Morris with the eddy viscosity nu + nu_T of a turbulence model (V&I §4.1.1)
+enum class PairViscosity { None, Morris, ConsistentMorris, MonaghanGingold, EddyMorris };
 
 struct FluxKey {
   FluxBase base = FluxBase::Centred;
@@ -37,7 +38,7 @@ struct NamedFluxScheme {
 // The built schemes: those the shipped cases, the validation runs (under every --flux and
 // --transport: `ondine validate --dry-run`) and the tests use, out of the 96 combinations of
 // the keys. Adding a row adds its pair loop to the build (6 per row: 2 dimensions x 3 kernels).
-inline constexpr std::array<NamedFluxScheme, 29> flux_schemes{{
+inline constexpr std::array<NamedFluxScheme, 31> flux_schemes{{
     {"centred", {FluxBase::Centred, PairViscosity::None, false, false}},
     {"centred+morris", {FluxBase::Centred, PairViscosity::Morris, false, false}},
     {"centred+consistent_morris", {FluxBase::Centred, PairViscosity::ConsistentMorris, false, false}},
@@ -50,6 +51,8 @@ inline constexpr std::array<NamedFluxScheme, 29> flux_schemes{{
     {"delta_sph+morris+av+background_pressure", {FluxBase::CentredDeltaSph, PairViscosity::Morris, true, true}},
     {"delta_sph+consistent_morris", {FluxBase::CentredDeltaSph, PairViscosity::ConsistentMorris, false, false}},
     {"delta_sph+consistent_morris+background_pressure", {FluxBase::CentredDeltaSph, PairViscosity::ConsistentMorris, false, true}},
+    {"delta_sph+eddy_morris", {FluxBase::CentredDeltaSph, PairViscosity::EddyMorris, false, false}},
+    {"delta_sph+eddy_morris+av", {FluxBase::CentredDeltaSph, PairViscosity::EddyMorris, true, false}},
     {"delta_sph+monaghan_gingold+av", {FluxBase::CentredDeltaSph, PairViscosity::MonaghanGingold, true, false}},
     {"riemann+av", {FluxBase::Leduc, PairViscosity::None, true, false}},
     {"riemann+monaghan_gingold+av", {FluxBase::Leduc, PairViscosity::MonaghanGingold, true, false}},

@@ -23,6 +23,27 @@ enum class RiemannVariant { Leduc, Vila };
 enum class ViscousTerm { None, Morris, MonaghanGingold };
 enum class TimeIntegrator { RK4, PredictorCorrector };
 
+// Eddy-viscosity turbulence models (Violeau & Issa, seed 000 §4.1.1): nu_T = L^2 sqrt(2 S:S)
+// with the mixing length L_m or Smagorinsky's C_s dx; the log-law wall function on no-slip walls.
+enum class TurbulenceModel { None, MixingLength, Smagorinsky };
+enum class WallLaw { None, Smooth, Rough };
+
+struct Turbulence {
+  TurbulenceModel model = TurbulenceModel::None;
+  double kappa = 0.41;  // von Karman's constant
+  // mixing length: a constant length (> 0), or the channel's kappa z sqrt(1 - z/H) with z the
+  // height above the bed along `axis`
+  double length = 0;
+  int axis = -1;  // -1: no channel form
+  double bed = 0, depth = 0;
+  double smagorinsky_constant = 0.12;  // C_s, filter width dx
+  WallLaw wall_function = WallLaw::None;
+  double smooth_constant = 5.2;  // u/u* = ln(y u*/nu)/kappa + B on a smooth wall
+  double roughness = 0;          // k_s (m): u/u* = ln(y/k_s)/kappa + B_r on a rough wall
+  double rough_constant = 8.5;   // B_r (Nikuradse's fully rough constant)
+  bool on() const { return model != TurbulenceModel::None; }
+};
+
 struct Box {
   Vec3 min{0, 0, 0}, max{0, 0, 0};
 };
@@ -71,7 +92,7 @@ struct Wall {
 };
 
 // The analytic or experimental reference a case is compared with (errors in summary.json).
-enum class ReferenceKind { None, Poiseuille, Couette, Hydrostatic, MartinMoyce, GhiaRe100, GhiaRe1000, Duct, SphericTest2, Cylinder, OpenChannel };
+enum class ReferenceKind { None, Poiseuille, Couette, Hydrostatic, MartinMoyce, GhiaRe100, GhiaRe1000, Duct, SphericTest2, Cylinder, OpenChannel, LogLaw };
 struct Reference {
   ReferenceKind kind = ReferenceKind::None;
   double length = 0;  // poiseuille: channel height L; hydrostatic: water depth H; martin_moyce: column width a; ghia: cavity side; duct: side (m)
@@ -79,6 +100,8 @@ struct Reference {
   double velocity = 0;   // couette: speed along x of the wall at y = origin + length, from t = 0 (m/s)
   // open_channel: length = H between the walls, origin = the bottom wall at the measured
   // section, velocity = the inlet's mean speed U (m/s)
+  // log_law: length = the flow depth H, origin = a point of the bed; the friction velocity
+  // u_* = sqrt(F H) of the momentum balance (F: body force and gravity along x), the law of turbulence:
   std::string file;      // spheric_test2: the measured series (a path resolved against the case file's folder)
   // cylinder: length = D, velocity = U of the stream, the wall whose force gives C_D, C_L and St,
   // counted from time `from` (s, after the start-up)
@@ -196,6 +219,7 @@ struct Scene {
   bool riemann_low_dissipation = true;  // Riemann-SPH: the low-dissipation pressure of Zhang et al. (2017); false: (2.100) as printed
   RiemannVariant riemann_variant = RiemannVariant::Leduc;
   ViscousTerm viscous_term = ViscousTerm::None;
+  Turbulence turbulence;              // turbulence: (Morris viscosity with nu + nu_T)
   double delta_sph = 0.0;             // 0 = no delta-SPH term (2.60)
   double artificial_viscosity = 0.0;  // alpha of (2.58); 0 = off
   bool background_pressure = false;   // tensile correction (2.105)
@@ -267,9 +291,10 @@ inline bool has_no_slip_wall(const Scene& s) {
 }
 
 // Morris viscosity along no-slip walls takes the consistent Laplacian unless the case
-// asks for the thesis' operator (scheme.consistent_laplacian: false).
+// asks for the thesis' operator (scheme.consistent_laplacian: false) or a turbulence model
+// (whose eddy viscosity varies from particle to particle: kernels/terms/EddyMorrisViscosity.hpp).
 inline bool uses_consistent_laplacian(const Scene& s) {
-  return s.viscous_term == ViscousTerm::Morris && s.consistent_laplacian && has_no_slip_wall(s);
+  return s.viscous_term == ViscousTerm::Morris && s.consistent_laplacian && has_no_slip_wall(s) && !s.turbulence.on();
 }
 
 // Riemann-SPH's MUSCL reconstruction (2.78) reads the renormalised velocity and density gradients.

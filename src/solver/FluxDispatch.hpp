@@ -15,6 +15,7 @@
 #include "kernels/terms/ConsistentMorrisViscosity.hpp"
 #include "kernels/terms/Continuity.hpp"
 #include "kernels/terms/DeltaSphDiffusion.hpp"
+#include "kernels/terms/EddyMorrisViscosity.hpp"
 #include "kernels/terms/MonaghanGingoldViscosity.hpp"
 #include "kernels/terms/MorrisViscosity.hpp"
 #include "kernels/terms/PressureGradient.hpp"
@@ -70,6 +71,10 @@ struct ViscousTerms<D, PairViscosity::Morris> {
 template <int D>
 struct ViscousTerms<D, PairViscosity::ConsistentMorris> {  // no-slip NFM walls (kernels/ConsistentLaplacian.hpp)
   using type = TypeList<term::ConsistentMorrisViscosity<D>>;
+};
+template <int D>
+struct ViscousTerms<D, PairViscosity::EddyMorris> {  // turbulence: nu + nu_T (kernels/terms/EddyMorrisViscosity.hpp)
+  using type = TypeList<term::EddyMorrisViscosity<D>>;
 };
 template <int D>
 struct ViscousTerms<D, PairViscosity::MonaghanGingold> {

@@ -83,6 +83,20 @@ void transport_velocity(const PassContext<D>& c) {
                                         c.wall, c.wall_cells, gamma, {}, eps2, c.ale_project});
 }
 
+// the turbulence model's nu_T (V&I §4.1.1) and, with the log-law wall function (Walls), u_* and y+
+// (kernels/turbulence/EddyViscosityPass.hpp)
+template <int D, class K, bool Walls>
+void eddy_viscosity(const PassContext<D>& c) {
+  const K W(c.R);
+  if constexpr (Walls)
+    Kokkos::parallel_for("ondine::EddyViscosity+wall_function", range(c),
+                         EddyViscosityPass<D, K, true>{c.list, c.box, W, c.R * c.R, c.x, c.u, c.rho, c.m, c.mixing_length, c.nu_T,
+                                                       c.wall, c.wall_cells, c.log_law, 0.05 * c.R, c.u_star, c.y_plus});
+  else
+    Kokkos::parallel_for("ondine::EddyViscosity", range(c),
+                         EddyViscosityPass<D, K, false>{c.list, c.box, W, c.R * c.R, c.x, c.u, c.rho, c.m, c.mixing_length, c.nu_T});
+}
+
 // max_i kappa_i of the no-slip wall term (4.85) (kernels/WallFluxPass.hpp)
 template <int D, class K>
 double wall_stiffness(const PassContext<D>& c) {
@@ -199,6 +213,8 @@ CompiledScheme<D> compile(const Scene& s) {
   c.renormalised_continuity = walls ? &renormalised_continuity<D, K, true> : &renormalised_continuity<D, K, false>;
   c.free_surface = walls ? &free_surface<D, K, true> : &free_surface<D, K, false>;
   c.wall_stiffness = &wall_stiffness<D, K>;
+  if (s.turbulence.on())
+    c.eddy_viscosity = walls && s.turbulence.wall_function != WallLaw::None ? &eddy_viscosity<D, K, true> : &eddy_viscosity<D, K, false>;
   if (s.ale) c.transport_velocity = walls ? &transport_velocity<D, K, true> : &transport_velocity<D, K, false>;
   c.shifting = walls ? &shifting<D, K, true> : &shifting<D, K, false>;
   c.probe_sum = levels ? &probe_sum<D, K, true> : &probe_sum<D, K, false>;

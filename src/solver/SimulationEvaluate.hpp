@@ -65,6 +65,9 @@ PassContext<D> Simulation<D>::context(const LevelSpan<D>& L) const {
   take(c.dm, field::MassRate{});
   take(c.free_surface, field::FreeSurface{});
   take(c.du0, field::TransportCorrection{});
+  take(c.nu_T, field::EddyViscosity{});
+  take(c.u_star, field::FrictionVelocity{});
+  take(c.y_plus, field::YPlus{});
   for (int k = 0; k < D; ++k) c.body[k] = scene_.gravity[k] + scene_.body_force[k];
   // the pair terms' coefficients at the level's radius; the lattice factor scales the plain
   // Morris term, the consistent one has its own weights
@@ -82,6 +85,13 @@ PassContext<D> Simulation<D>::context(const LevelSpan<D>& L) const {
   c.nu = scene_.nu;
   c.rho0 = scene_.rho0;
   c.morris_factor = scheme_.morris_factor;
+  if (scene_.turbulence.on()) {
+    const Turbulence& tu = scene_.turbulence;
+    c.mixing_length = MixingLength<D>{tu.model == TurbulenceModel::Smagorinsky ? tu.smagorinsky_constant * L.dx : tu.length, tu.axis,
+                                      tu.kappa, tu.bed, tu.depth};
+    c.log_law = LogLaw::make(tu.kappa, scene_.nu, tu.smooth_constant, tu.wall_function == WallLaw::Rough ? tu.roughness : 0.0,
+                             tu.rough_constant);
+  }
   c.clearance = 0.5 * L.dx;
   c.velocity_muscl = scene_.wall_velocity_reconstruction;
   if (refinement_) {

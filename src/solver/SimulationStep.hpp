@@ -33,13 +33,23 @@ double Simulation<D>::time_step() const {
     if (L.active_end > L.first) finest = L.level;
   const double R = levels.size() == 1 ? levels[0].R : levels[comm().max(finest)].R;
   double dt = scene_.cfl_acoustic * R / cmax;
-  if (scene_.nu > 0) dt = std::min(dt, scene_.cfl_viscous * R * R / scene_.nu);
+  // with a turbulence model the largest nu + nu_T bounds the viscous step (2.103) and, as the wall
+  // function's stress u_*^2 = nu_eff u_t / y with nu_eff of the order of nu_T there, the wall term's
+  double nu_max = scene_.nu;
+  if (p_.has(field::EddyViscosity{})) {
+    double nu_T = 0;
+    Kokkos::parallel_reduce("ondine::TimeStep::eddy_viscosity", Kokkos::RangePolicy<ExecSpace>(0, n),
+                            MaxValue<std::decay_t<decltype(p_.get(field::EddyViscosity{}))>>{p_.get(field::EddyViscosity{})},
+                            Kokkos::Max<double>(nu_T));
+    nu_max += comm().max(nu_T);
+  }
+  if (nu_max > 0) dt = std::min(dt, scene_.cfl_viscous * R * R / nu_max);
   if (a2max > 0) dt = std::min(dt, scene_.cfl_force * std::sqrt(R / std::sqrt(a2max)));
   // the viscous wall term's stiffness, level by level
   if (!walls_.empty() && scene_.viscous_term != ViscousTerm::None)
     for (const LevelSpan<D>& L : levels) {
       double kmax = scheme_.wall_stiffness(context(L));  // 0 on a rank without SPH particles of this level
-      kmax = comm().max(kmax);
+      kmax = comm().max(kmax) * (scene_.nu > 0 ? nu_max / scene_.nu : 1.0);
       if (kmax > 0) dt = std::min(dt, 1.0 / kmax);
     }
   if (!std::isfinite(dt) || dt <= 0) throw std::runtime_error("time step is not finite (the state contains NaN)");

@@ -4,12 +4,14 @@
 // so a term the scene does not use is absent from the compiled loop:
 //   wall::PressureFlux (4.22, 4.14, with the 2 P_min of 2.105) and wall::Continuity (4.25)
 //   always; wall::NoSlipViscosity (4.85) in viscous scenes, in its consistent form with
-//   the consistent Laplacian (kernels/ConsistentLaplacian.hpp).
+//   the consistent Laplacian (kernels/ConsistentLaplacian.hpp); with a turbulence model's log-law
+//   wall function wall::WallFunction in its place.
 #include "kernels/PassContext.hpp"
 #include "kernels/WallFluxPass.hpp"
 #include "kernels/wall/Continuity.hpp"
 #include "kernels/wall/NoSlipViscosity.hpp"
 #include "kernels/wall/PressureFlux.hpp"
+#include "kernels/wall/WallFunction.hpp"
 #include "scene/Scene.hpp"
 
 namespace ondine {
@@ -29,6 +31,8 @@ void run_wall_flux(const PassContext<D>& c) {
 template <int D, class Kernel>
 PassFunction<D> select_wall_flux(const Scene& s) {
   using detail::run_wall_flux;
+  if (s.turbulence.wall_function != WallLaw::None)
+    return &run_wall_flux<D, Kernel, wall::PressureFlux, wall::Continuity, wall::WallFunction<D>>;
   if (uses_consistent_laplacian(s))
     return &run_wall_flux<D, Kernel, wall::PressureFlux, wall::Continuity, wall::NoSlipViscosity<D, true>>;
   if (s.viscous_term != ViscousTerm::None)

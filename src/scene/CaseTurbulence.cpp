@@ -1,0 +1,69 @@
+// turbulence: the eddy-viscosity models of Violeau & Issa (seed 000 §4.1.1) and the log-law
+// wall function (docs/case-file.md "turbulence").
+#include "scene/CaseSections.hpp"
+
+namespace ondine::case_file {
+
+void read_turbulence(const Reader& r, YAML::Node& root, Scene& s) {
+  const YAML::Node t = root["turbulence"];
+  if (!t) return;
+  const int D = s.dimension;
+  r.only_keys(t, "turbulence", {"model", "kappa", "mixing_length", "smagorinsky_constant", "wall_function", "roughness"});
+  Turbulence& m = s.turbulence;
+  const std::string model = r.word(r.required(t, "turbulence", "model"), "turbulence.model", {"none", "mixing_length", "smagorinsky"});
+  m.model = model == "mixing_length" ? TurbulenceModel::MixingLength
+            : model == "smagorinsky" ? TurbulenceModel::Smagorinsky
+                                     : TurbulenceModel::None;
+  if (t["kappa"]) {
+    m.kappa = r.positive(t["kappa"], "turbulence.kappa", " (von Karman's constant)");
+    if (m.kappa > 1) r.fail(t["kappa"], "turbulence.kappa", "expected a value in (0, 1] (0.41 in the log law)");
+  }
+  if (const YAML::Node l = t["mixing_length"]) {
+    if (m.model != TurbulenceModel::MixingLength) r.fail(l, "turbulence.mixing_length", "is read with turbulence.model: mixing_length only");
+    r.only_keys(l, "turbulence.mixing_length", {"length", "axis", "bed", "depth"});
+    if (l["length"]) {
+      if (l["axis"] || l["bed"] || l["depth"])
+        r.fail(l["length"], "turbulence.mixing_length.length", "give a constant length or the channel's axis, bed and depth, not both");
+      m.length = r.positive(l["length"], "turbulence.mixing_length.length", " (m)");
+    } else {
+      const YAML::Node axis = r.required(l, "turbulence.mixing_length", "axis");
+      m.axis = static_cast<int>(r.integer(axis, "turbulence.mixing_length.axis", 0, D - 1));
+      m.bed = r.number(r.required(l, "turbulence.mixing_length", "bed"), "turbulence.mixing_length.bed", "the bed's coordinate along axis (m)");
+      m.depth = r.positive(r.required(l, "turbulence.mixing_length", "depth"), "turbulence.mixing_length.depth", " (m, the flow depth H)");
+    }
+  } else if (m.model == TurbulenceModel::MixingLength) {
+    r.fail(t, "turbulence.mixing_length",
+           "is required with turbulence.model: mixing_length: {length: L} or the channel's {axis: k, bed: z0, depth: H} "
+           "(L_m = kappa z sqrt(1 - z/H))");
+  }
+  if (t["smagorinsky_constant"]) {
+    if (m.model != TurbulenceModel::Smagorinsky)
+      r.fail(t["smagorinsky_constant"], "turbulence.smagorinsky_constant", "is read with turbulence.model: smagorinsky only");
+    m.smagorinsky_constant = r.positive(t["smagorinsky_constant"], "turbulence.smagorinsky_constant", " (C_s)");
+  }
+  if (t["wall_function"]) {
+    const std::string w = r.word(t["wall_function"], "turbulence.wall_function", {"none", "smooth", "rough"});
+    m.wall_function = w == "smooth" ? WallLaw::Smooth : w == "rough" ? WallLaw::Rough : WallLaw::None;
+    if (m.wall_function != WallLaw::None && !has_no_slip_wall(s))
+      r.fail(t["wall_function"], "turbulence.wall_function", "acts on no-slip walls, and the case has none");
+  }
+  if (t["roughness"]) {
+    if (m.wall_function != WallLaw::Rough) r.fail(t["roughness"], "turbulence.roughness", "is read with turbulence.wall_function: rough only");
+    m.roughness = r.positive(t["roughness"], "turbulence.roughness", " (m, the equivalent sand roughness k_s)");
+  } else if (m.wall_function == WallLaw::Rough) {
+    r.fail(t, "turbulence.roughness", "is required with turbulence.wall_function: rough (the equivalent sand roughness k_s, m)");
+  }
+  if (!m.on()) {
+    if (m.wall_function != WallLaw::None) r.fail(t["wall_function"], "turbulence.wall_function", "needs a turbulence.model");
+    return;
+  }
+  const YAML::Node sc = root["scheme"];
+  if (s.viscous_term != ViscousTerm::Morris)
+    r.fail(sc ? sc : t, "scheme.viscous_term",
+           "must be morris with a turbulence model: the eddy viscosity nu + nu_T enters the Morris Laplacian");
+  if (!s.refinement_zones.empty() || root["refinement"])
+    r.fail(t, "turbulence", "is not built with refinement zones (the eddy viscosity is not interpolated on the guards)");
+  if (root["open_boundaries"]) r.fail(t, "turbulence", "is not built with open boundaries (the buffers carry no eddy viscosity)");
+}
+
+}  // namespace ondine::case_file

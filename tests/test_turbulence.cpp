@@ -1,0 +1,204 @@
+// Turbulence (V&I §4.1.1): the eddy viscosity of the mixing-length and Smagorinsky models on
+// analytic velocity fields, the log law's inversion, and the wall function against the laminar
+// no-slip term in the viscous sublayer.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "kernels/turbulence/LogLaw.hpp"
+#include "test_helpers.hpp"
+
+using namespace ondine;
+using namespace ondine::test;
+using Catch::Matchers::Contains;
+
+namespace {
+
+// a free block of fluid 1 x 0.5 m (no wall, no gravity), spacing 0.025, with a turbulence section
+Simulation<2> free_block(const std::string& turbulence) {
+  const std::string y = R"(dimension: 2
+domain: {min: [-0.2, -0.2], max: [1.2, 0.7]}
+fluid: {rho0: 1000, sound_speed: 10, viscosity: 1.0e-6}
+discretisation: {dx: 0.025}
+fluid_blocks: [{min: [0, 0], max: [1, 0.5]}]
+scheme: {viscous_term: morris, delta_sph: 0.1}
+time: {duration: 1, output_interval: 1}
+turbulence: )" + turbulence + "\n";
+  return Simulation<2>(parse_case(y, "turbulence.yaml"));
+}
+
+// nu_T after one evaluation of the velocity field u(x, y) = (a0 x + a1 y, b0 x + b1 y), and the
+// particles' heights
+template <class F>
+std::pair<std::vector<double>, std::vector<double>> eddy_viscosity_of(Simulation<2>& sim, double a0, double a1, double b0, double b1) {
+  disorder(sim, 0.2, 0.0, 0.0, 7);
+  auto& p = sim.particles();
+  const auto x = p.get(field::Position{});
+  const auto u = p.get(field::Velocity{});
+  Kokkos::parallel_for(static_cast<int>(p.size()), KOKKOS_LAMBDA(int i) {
+    u(i, 0) = a0 * x(i, 0) + a1 * x(i, 1);
+    u(i, 1) = b0 * x(i, 0) + b1 * x(i, 1);
+  });
+  sim.evaluate();
+  auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), x);
+  auto hn = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::EddyViscosity{}));
+  std::vector<double> nu(p.size()), z(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    nu[i] = hn(i);
+    z[i] = hx(i, 1);
+  }
+  return {nu, z};
+}
+
+}  // namespace
+
+TEST_CASE("Smagorinsky: nu_T = (C_s dx)^2 |a| in simple shear, 0 in solid rotation, on a disordered block", "[unit][turbulence]") {
+  const double a = 3.0, Cs = 0.12, dx = 0.025;
+  {
+    Simulation<2> sim = free_block("{model: smagorinsky}");
+    const auto [nu, z] = eddy_viscosity_of<void>(sim, 0.0, a, 0.0, 0.0);  // u = (a y, 0): sqrt(2 S:S) = |a|
+    double worst = 0;
+    for (double v : nu) worst = std::max(worst, std::abs(v / (Cs * dx * Cs * dx * a) - 1.0));
+    INFO("worst relative error " << worst);
+    CHECK(worst < 1e-9);  // renormalised gradient: exact for a linear field, edges and corners included
+  }
+  {
+    Simulation<2> sim = free_block("{model: smagorinsky, smagorinsky_constant: 0.2}");
+    const auto [nu, z] = eddy_viscosity_of<void>(sim, 0.0, -a, a, 0.0);  // u = (-a y, a x): no strain
+    double worst = 0;
+    for (double v : nu) worst = std::max(worst, std::abs(v));
+    CHECK(worst < 1e-12 * 0.2 * dx * 0.2 * dx * a);
+  }
+  {
+    Simulation<2> sim = free_block("{model: smagorinsky}");
+    const auto [nu, z] = eddy_viscosity_of<void>(sim, a, 0.0, 0.0, -a);  // pure strain (a x, -a y): sqrt(2 S:S) = 2|a|
+    double worst = 0;
+    for (double v : nu) worst = std::max(worst, std::abs(v / (Cs * dx * Cs * dx * 2 * a) - 1.0));
+    CHECK(worst < 1e-9);
+  }
+}
+
+TEST_CASE("Mixing length: nu_T = (kappa z sqrt(1 - z/H))^2 |du/dz| in the channel form, L^2 |a| with a constant length", "[unit][turbulence]") {
+  const double a = 2.0, H = 0.5, kappa = 0.41;
+  {
+    Simulation<2> sim = free_block("{model: mixing_length, mixing_length: {axis: 1, bed: 0.0, depth: 0.5}}");
+    const auto [nu, z] = eddy_viscosity_of<void>(sim, 0.0, a, 0.0, 0.0);
+    double worst = 0;
+    for (std::size_t i = 0; i < nu.size(); ++i) {
+      const double zz = std::min(std::max(z[i], 0.0), H);
+      const double L = kappa * zz * std::sqrt(1.0 - zz / H);
+      worst = std::max(worst, std::abs(nu[i] - L * L * a));
+    }
+    CHECK(worst < 1e-12);
+  }
+  {
+    Simulation<2> sim = free_block("{model: mixing_length, kappa: 0.4, mixing_length: {length: 0.01}}");
+    const auto [nu, z] = eddy_viscosity_of<void>(sim, 0.0, a, 0.0, 0.0);
+    double worst = 0;
+    for (double v : nu) worst = std::max(worst, std::abs(v / (1e-4 * a) - 1.0));
+    CHECK(worst < 1e-9);
+  }
+}
+
+TEST_CASE("Log law: u_* from u_t and y inverts the law in the sublayer, the log layer and on a rough wall", "[unit][turbulence]") {
+  const LogLaw smooth = LogLaw::make(0.41, 1e-6, 5.2, 0.0, 8.5);
+  // y+_c: y+ = ln(y+)/kappa + B
+  CHECK(smooth.yc == Approx(11.0).margin(0.2));
+  CHECK(smooth.yc - std::log(smooth.yc) / 0.41 - 5.2 == Approx(0.0).margin(1e-12));
+  for (const double us : {1e-3, 0.05, 2.0})
+    for (const double yplus : {1.0, 5.0, 11.5, 30.0, 300.0, 3e4}) {
+      const double y = yplus * 1e-6 / us;
+      const double ut = smooth.speed(us, y);
+      INFO("u* " << us << ", y+ " << yplus << ", u_t " << ut);
+      CHECK(smooth.friction_velocity(ut, y) == Approx(us).epsilon(1e-12));
+    }
+  // the log layer's value, by hand: y+ = 100 gives u+ = ln(100)/0.41 + 5.2 = 16.432
+  CHECK(smooth.speed(0.1, 100 * 1e-6 / 0.1) / 0.1 == Approx(std::log(100.0) / 0.41 + 5.2).epsilon(1e-14));
+  const LogLaw rough = LogLaw::make(0.41, 1e-6, 5.2, 0.002, 8.5);
+  for (const double y : {0.004, 0.02, 0.3}) {
+    const double ut = rough.speed(0.03, y);
+    CHECK(ut / 0.03 == Approx(std::log(y / 0.002) / 0.41 + 8.5).epsilon(1e-14));
+    CHECK(rough.friction_velocity(ut, y) == Approx(0.03).epsilon(1e-14));
+  }
+  CHECK(smooth.friction_velocity(0.0, 0.01) == 0.0);
+}
+
+TEST_CASE("Wall function: in the viscous sublayer it gives the laminar no-slip wall term", "[turbulence]") {
+  // a shear layer u = (U z / h, 0) over a no-slip floor, nu so large that every particle is in
+  // the sublayer (y+ < 11), the eddy viscosity made negligible (a constant mixing length of 1e-9 m):
+  // the accelerations of the wall-function scene equal those of the plain Morris scene with the
+  // thesis' wall Laplacian (4.85), whose tangential part the wall function reproduces there
+  auto run = [](const std::string& extra, const std::string& scheme) {
+    const std::string y = R"(dimension: 2
+domain: {min: [0, -0.1], max: [0.4, 0.4], periodic: [true, false]}
+fluid: {rho0: 1000, sound_speed: 10, viscosity: 1.0e-2}
+discretisation: {dx: 0.02}
+walls:
+  - {name: floor, points: [[0.0, 0.0], [0.4, 0.0]], fluid_side: left, condition: no_slip}
+fluid_blocks: [{min: [0, 0], max: [0.4, 0.2]}]
+scheme: )" + scheme + "\ntime: {duration: 1, output_interval: 1}\n" + extra;
+    Simulation<2> sim(parse_case(y, "layer.yaml"));
+    auto& p = sim.particles();
+    const auto x = p.get(field::Position{});
+    const auto u = p.get(field::Velocity{});
+    Kokkos::parallel_for(static_cast<int>(p.size()), KOKKOS_LAMBDA(int i) {
+      u(i, 0) = 0.05 * x(i, 1) / 0.2;
+      u(i, 1) = 0.0;
+    });
+    sim.evaluate();
+    return std::make_pair(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Acceleration{})),
+                          p.has(field::YPlus{}) ? Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::YPlus{}))
+                                                : Kokkos::View<double*, Kokkos::HostSpace>());
+  };
+  const auto [a_wf, yplus] = run("turbulence: {model: mixing_length, mixing_length: {length: 1.0e-9}, wall_function: smooth}\n",
+                                 "{viscous_term: morris, delta_sph: 0.1}");
+  const auto [a_lam, none] = run("", "{viscous_term: morris, delta_sph: 0.1, consistent_laplacian: false}");
+  REQUIRE(a_wf.extent(0) == a_lam.extent(0));
+  double worst = 0, scale = 0, ymax = 0;
+  int near = 0;
+  for (std::size_t i = 0; i < a_wf.extent(0); ++i) {
+    worst = std::max(worst, std::abs(a_wf(i, 0) - a_lam(i, 0)));
+    scale = std::max(scale, std::abs(a_lam(i, 0)));
+    if (yplus(i) > 0) ++near;
+    ymax = std::max(ymax, yplus(i));
+  }
+  INFO("worst |du_x| difference " << worst << " against max |du_x| " << scale << ", largest y+ " << ymax);
+  CHECK(near > 20);      // the rows within R of the floor
+  CHECK(ymax < 11.0);    // all in the sublayer
+  CHECK(scale > 1e-3);   // the wall term acts
+  CHECK(worst < 1e-9 * scale);
+}
+
+TEST_CASE("Turbulence: the case file refuses what is not built, naming the key", "[unit][turbulence][case]") {
+  const std::string base = R"(dimension: 2
+domain: {min: [0, -0.1], max: [0.4, 0.4], periodic: [true, false]}
+fluid: {rho0: 1000, sound_speed: 10, viscosity: 1.0e-6}
+discretisation: {dx: 0.02}
+fluid_blocks: [{min: [0, 0], max: [0.4, 0.2]}]
+time: {duration: 1, output_interval: 1}
+)";
+  auto refusal = [&](const std::string& rest) {
+    try {
+      parse_case(base + rest, "t.yaml");
+    } catch (const CaseError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  CHECK(refusal("scheme: {viscous_term: morris, delta_sph: 0.1}\nturbulence: {model: smagorinsky}\n") == "accepted");
+  CHECK_THAT(refusal("scheme: {viscous_term: monaghan_gingold}\nturbulence: {model: smagorinsky}\n"),
+             Contains("scheme.viscous_term") && Contains("must be morris"));
+  CHECK_THAT(refusal("scheme: {viscous_term: morris}\nturbulence: {model: mixing_length}\n"),
+             Contains("turbulence.mixing_length") && Contains("is required"));
+  CHECK_THAT(refusal("scheme: {viscous_term: morris}\nturbulence: {model: smagorinsky, wall_function: smooth}\n"),
+             Contains("turbulence.wall_function") && Contains("no-slip walls"));
+  CHECK_THAT(refusal("scheme: {viscous_term: morris}\nturbulence: {model: k_epsilon}\n"), Contains("turbulence.model") && Contains("smagorinsky"));
+  CHECK_THAT(refusal("scheme: {viscous_term: morris}\nturbulence: {model: mixing_length, mixing_length: {length: 0.1, depth: 1}}\n"),
+             Contains("not both"));
+  CHECK_THAT(refusal("scheme: {viscous_term: morris, flux: riemann}\nturbulence: {model: smagorinsky}\n"),
+             Contains("not built") && Contains("turbulence.model"));
+  CHECK_THAT(refusal("walls:\n  - {name: floor, points: [[0.0, 0.0], [0.4, 0.0]], fluid_side: left, condition: no_slip}\n"
+                     "scheme: {viscous_term: morris}\nturbulence: {model: smagorinsky, wall_function: rough}\n"),
+             Contains("turbulence.roughness") && Contains("is required"));
+}
