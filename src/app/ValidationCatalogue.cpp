@@ -216,6 +216,14 @@ const std::vector<ValidationCase>& catalogue() {
       {"turbulent_channel_2d", "cases/turbulent_channel_2d.yaml", 1.0, {{0.05, false}, {0.025, true}, {0.0125, true}},
        stable({{"velocity_l2", 0.03}, {"friction_velocity_error", 0.03}, {"wall_leaks", 0.5}}),
        {}, {}, {"velocity_l2_near_bed", "y_plus_first_row"}},
+      // SPHERIC Test 2 with Smagorinsky's LES closure (C_s = 0.12, the peer's) in place of the
+      // artificial viscosity, water's nu = 1e-6 m^2/s, beside the laminar record: the first
+      // impact's pressures, their noise (RMS against the measured series) and the heights; the
+      // heights keep the laminar case's bounds
+      {"turbulent_spheric_test2_3d_les", "cases/spheric_test2_3d.yaml", 0.55, {{0.05, false}, {0.04, true}},
+       test2_bounds,
+       {"fluid.viscosity=1e-6", "scheme.viscous_term=morris", "scheme.artificial_viscosity=0", "turbulence.model=smagorinsky"}, {},
+       test2_shown},
       {"cylinder_re100_2d", "cases/cylinder_re100_2d.yaml", 0.1, {{0.01, false, false}, {0.004, true}},
        stable({{"cd_error", 0.3}, {"cl_amplitude_error", 0.1}, {"strouhal_error", 0.1}, {"open_mass_balance", 1e-12}}),
        {"time.duration=4.5", "reference.from=2.5"}, {}, {"cd_mean", "cl_amplitude", "strouhal", "shedding_periods"}},
