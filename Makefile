@@ -14,6 +14,9 @@ export OMP_PLACES    ?= threads
 # with CUDA goes to .deps/kokkos-cuda (scripts/setup-kokkos-cuda.sh), Ondine to
 # $(BUILD_CUDA) with Kokkos' nvcc_wrapper as its C++ compiler. No nvcc: nothing to do.
 BUILD_CUDA  ?= build-cuda
+# the CUDA targets to build: empty, every one; CI (.ci/run) builds "ondine ondine_bench" (the unit
+# tests read device views from the host and do not run on a GPU)
+CUDA_TARGETS ?=
 CUDA_ROOT   ?= $(if $(ONDINE_CUDA_ROOT),$(ONDINE_CUDA_ROOT),/usr/local/cuda)
 KOKKOS_CUDA ?= $(CURDIR)/.deps/kokkos-cuda
 CUDA_CMAKE_ARGS ?=
@@ -67,7 +70,7 @@ $(BUILD_CUDA)/CMakeCache.txt: | setup-cuda
 	  -DCMAKE_PREFIX_PATH="$(KOKKOS_CUDA)" $(CUDA_CMAKE_ARGS)
 
 cuda: setup-cuda $(BUILD_CUDA)/CMakeCache.txt
-	cmake --build $(BUILD_CUDA) -j $(JOBS)
+	cmake --build $(BUILD_CUDA) -j $(JOBS) $(if $(CUDA_TARGETS),--target $(CUDA_TARGETS))
 else
 setup-cuda cuda:
 	@echo "make $@: no nvcc at $(CUDA_ROOT)/bin/nvcc (set CUDA_ROOT); skipped"

@@ -10,6 +10,7 @@
 #include "kernels/WallPressure.hpp"
 #include "kernels/WallSet.hpp"
 #include "kernels/turbulence/EddyViscosityPass.hpp"
+#include "kernels/turbulence/KEpsilon.hpp"
 #include "kernels/apr/RefinementZones.hpp"
 
 namespace ondine {
@@ -61,6 +62,11 @@ struct PassContext {
   field_view_t<field::YPlus, D> y_plus;
   MixingLength<D> mixing_length;  // L(x) of the model at this level's spacing
   LogLaw log_law;
+  field_view_t<field::TurbulentKineticEnergy, D> k;  // k-epsilon: the transported k and epsilon, their rates
+  field_view_t<field::DissipationRate, D> eps;
+  field_view_t<field::TurbulentKineticEnergyRate, D> dk;
+  field_view_t<field::DissipationRateRate, D> deps;
+  KEpsilonConstants k_eps;
   double clearance = 0;            // dx / 2 of the level: the wall-ward correction acts closer than this
   bool velocity_muscl = false;     // scheme.wall_velocity_reconstruction: the MUSCL state of u (4.30)
   bool wall_state_only = false;    // wall tractions: the MUSCL state's pressure alone, no rho c u_n (wall sensors)

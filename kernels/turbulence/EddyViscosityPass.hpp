@@ -4,7 +4,9 @@
 // with <grad u>_i the renormalised velocity gradient (2.42-2.44; kernels/VelocityGradientSum.hpp),
 // exact for a linear field on a support cut by a wall or the free surface, and
 //   L = kappa z sqrt(1 - z/H) (the channel's mixing length, z above the bed, 0 <= z <= H),
-//   L = a constant length (the mixing length's general form), or C_s dx (Smagorinsky).
+//   L = a constant length (the mixing length's general form), or C_s dx (Smagorinsky);
+// with k-epsilon (KEps) nu_T = C_mu k^2 / epsilon of the particle's own k and epsilon
+// (kernels/turbulence/KEpsilon.hpp), no neighbour loop.
 // With the log-law wall function (Walls), also the friction velocity u_* and y+ = y u_* / nu of
 // the particle's nearest no-slip wall point (kernels/turbulence/LogLaw.hpp), y = |(x_i - x_q).n_out|
 // (at least 0.05 R), from the tangential part of u_i - u_q: read by kernels/wall/WallFunction.hpp.
@@ -43,7 +45,7 @@ KOKKOS_INLINE_FUNCTION double strain_rate_magnitude(const Mat<D>& g) {
   return kmath::sqrt(2.0 * s2);
 }
 
-template <int D, class Kernel, bool Walls>
+template <int D, class Kernel, bool Walls, bool KEps = false>
 struct EddyViscosityPass {
   NeighbourList<D> list;
   PeriodicBox<D> box;
@@ -62,15 +64,23 @@ struct EddyViscosityPass {
   double min_dn = 0;
   field_view_t<field::FrictionVelocity, D> u_star = {};
   field_view_t<field::YPlus, D> y_plus = {};
+  // k-epsilon (KEps only)
+  field_view_t<field::TurbulentKineticEnergy, D> k = {};
+  field_view_t<field::DissipationRate, D> eps = {};
+  double c_mu = 0.09;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<D> xi = load<D>(x, i), ui = load<D>(u, i);
-    VelocityGradientSum<D> S;
-    for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>& xij, const double r) {
-      S.add(m(j) / rho(j), xij, (W.derivative(r) / r) * xij, load<D>(u, j) - ui);
-    });
-    const double L = length(xi);
-    nu_T(i) = L * L * strain_rate_magnitude<D>(S.gradient());
+    if constexpr (KEps) {
+      nu_T(i) = c_mu * k(i) * k(i) / eps(i);
+    } else {
+      VelocityGradientSum<D> S;
+      for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>& xij, const double r) {
+        S.add(m(j) / rho(j), xij, (W.derivative(r) / r) * xij, load<D>(u, j) - ui);
+      });
+      const double L = length(xi);
+      nu_T(i) = L * L * strain_rate_magnitude<D>(S.gradient());
+    }
     if constexpr (Walls) {
       double r_near = 1e300, us = 0.0, y = 0.0;
       for_each_point_within<D>(wall_cells, box, wall.x, xi, R2, [&](const int q, const Vec<D>& xiq, const double r) {

@@ -216,6 +216,16 @@ const std::vector<ValidationCase>& catalogue() {
       {"turbulent_channel_2d", "cases/turbulent_channel_2d.yaml", 1.0, {{0.05, false}, {0.025, true}, {0.0125, true}},
        stable({{"velocity_l2", 0.03}, {"friction_velocity_error", 0.03}, {"wall_leaks", 0.5}}),
        {}, {}, {"velocity_l2_near_bed", "y_plus_first_row"}},
+      // the same channel on a rough bed (k_s = 0.01 m, k_s+ = 104: fully rough), started at the
+      // rough law's depth mean u_* (ln(H / k_s) / kappa - 1 / kappa + 8.5) = 5.42 m/s
+      {"turbulent_channel_rough_2d", "cases/turbulent_channel_2d.yaml", 1.0, {{0.05, false}, {0.025, true}},
+       stable({{"velocity_l2", 0.03}, {"friction_velocity_error", 0.03}, {"wall_leaks", 0.5}}),
+       {"turbulence.wall_function=rough", "turbulence.roughness=0.01", "fluid_blocks.0.velocity=[5.42, 0.0]"}, {},
+       {"velocity_l2_near_bed", "y_plus_first_row"}},
+      // the same channel with k-epsilon in place of the mixing length (cases/turbulent_channel_k_epsilon_2d.yaml)
+      {"turbulent_channel_k_epsilon_2d", "cases/turbulent_channel_k_epsilon_2d.yaml", 1.0, {{0.05, false}, {0.025, true}},
+       stable({{"friction_velocity_error", 0.05}, {"wall_leaks", 0.5}}), {}, {},
+       {"velocity_l2", "velocity_l2_near_bed", "y_plus_first_row"}},
       // SPHERIC Test 2 with Smagorinsky's LES closure (C_s = 0.12, the peer's) in place of the
       // artificial viscosity, water's nu = 1e-6 m^2/s, beside the laminar record: the first
       // impact's pressures, their noise (RMS against the measured series) and the heights; the

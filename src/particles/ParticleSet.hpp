@@ -23,6 +23,8 @@ class ParticleSet {
                             field::VelocityGradientZ, field::ShepardGamma, field::FreeSurface,
                             field::TransportCorrection, field::MassRate, field::OpenRole,
                             field::EddyViscosity, field::FrictionVelocity, field::YPlus,
+                            field::TurbulentKineticEnergy, field::DissipationRate, field::TurbulentKineticEnergyRate,
+                            field::DissipationRateRate,
                             field::AprLevel, field::AprBirthLevel, field::AprGuard, field::AprMother, field::AprParent,
                             field::StagePosition, field::StageVelocity, field::StageDensity,
                             field::StagePositionSum, field::StageVelocitySum, field::StageDensitySum,

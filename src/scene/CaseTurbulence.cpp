@@ -8,11 +8,12 @@ void read_turbulence(const Reader& r, YAML::Node& root, Scene& s) {
   const YAML::Node t = root["turbulence"];
   if (!t) return;
   const int D = s.dimension;
-  r.only_keys(t, "turbulence", {"model", "kappa", "mixing_length", "smagorinsky_constant", "wall_function", "roughness"});
+  r.only_keys(t, "turbulence", {"model", "kappa", "mixing_length", "smagorinsky_constant", "wall_function", "roughness", "k_epsilon"});
   Turbulence& m = s.turbulence;
-  const std::string model = r.word(r.required(t, "turbulence", "model"), "turbulence.model", {"none", "mixing_length", "smagorinsky"});
+  const std::string model = r.word(r.required(t, "turbulence", "model"), "turbulence.model", {"none", "mixing_length", "smagorinsky", "k_epsilon"});
   m.model = model == "mixing_length" ? TurbulenceModel::MixingLength
             : model == "smagorinsky" ? TurbulenceModel::Smagorinsky
+            : model == "k_epsilon"   ? TurbulenceModel::KEpsilon
                                      : TurbulenceModel::None;
   if (t["kappa"]) {
     m.kappa = r.positive(t["kappa"], "turbulence.kappa", " (von Karman's constant)");
@@ -40,6 +41,20 @@ void read_turbulence(const Reader& r, YAML::Node& root, Scene& s) {
     if (m.model != TurbulenceModel::Smagorinsky)
       r.fail(t["smagorinsky_constant"], "turbulence.smagorinsky_constant", "is read with turbulence.model: smagorinsky only");
     m.smagorinsky_constant = r.positive(t["smagorinsky_constant"], "turbulence.smagorinsky_constant", " (C_s)");
+  }
+  if (const YAML::Node k = t["k_epsilon"]) {
+    if (m.model != TurbulenceModel::KEpsilon) r.fail(k, "turbulence.k_epsilon", "is read with turbulence.model: k_epsilon only");
+    r.only_keys(k, "turbulence.k_epsilon", {"initial_k", "initial_epsilon", "c_mu", "c1", "c2", "sigma_k", "sigma_epsilon"});
+    m.initial_k = r.positive(r.required(k, "turbulence.k_epsilon", "initial_k"), "turbulence.k_epsilon.initial_k", " (m^2/s^2)");
+    m.initial_epsilon =
+        r.positive(r.required(k, "turbulence.k_epsilon", "initial_epsilon"), "turbulence.k_epsilon.initial_epsilon", " (m^2/s^3)");
+    if (k["c_mu"]) m.c_mu = r.positive(k["c_mu"], "turbulence.k_epsilon.c_mu", "");
+    if (k["c1"]) m.c1 = r.positive(k["c1"], "turbulence.k_epsilon.c1", "");
+    if (k["c2"]) m.c2 = r.positive(k["c2"], "turbulence.k_epsilon.c2", "");
+    if (k["sigma_k"]) m.sigma_k = r.positive(k["sigma_k"], "turbulence.k_epsilon.sigma_k", "");
+    if (k["sigma_epsilon"]) m.sigma_e = r.positive(k["sigma_epsilon"], "turbulence.k_epsilon.sigma_epsilon", "");
+  } else if (m.model == TurbulenceModel::KEpsilon) {
+    r.fail(t, "turbulence.k_epsilon", "is required with turbulence.model: k_epsilon: {initial_k: k0, initial_epsilon: epsilon0}");
   }
   if (t["wall_function"]) {
     const std::string w = r.word(t["wall_function"], "turbulence.wall_function", {"none", "smooth", "rough"});

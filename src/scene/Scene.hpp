@@ -24,8 +24,9 @@ enum class ViscousTerm { None, Morris, MonaghanGingold };
 enum class TimeIntegrator { RK4, PredictorCorrector };
 
 // Eddy-viscosity turbulence models (Violeau & Issa, seed 000 §4.1.1): nu_T = L^2 sqrt(2 S:S)
-// with the mixing length L_m or Smagorinsky's C_s dx; the log-law wall function on no-slip walls.
-enum class TurbulenceModel { None, MixingLength, Smagorinsky };
+// with the mixing length L_m or Smagorinsky's C_s dx, or nu_T = C_mu k^2 / epsilon with k and
+// epsilon transported (k-epsilon, Launder & Spalding 1974); the log-law wall function on no-slip walls.
+enum class TurbulenceModel { None, MixingLength, Smagorinsky, KEpsilon };
 enum class WallLaw { None, Smooth, Rough };
 
 struct Turbulence {
@@ -41,6 +42,9 @@ struct Turbulence {
   double smooth_constant = 5.2;  // u/u* = ln(y u*/nu)/kappa + B on a smooth wall
   double roughness = 0;          // k_s (m): u/u* = ln(y/k_s)/kappa + B_r on a rough wall
   double rough_constant = 8.5;   // B_r (Nikuradse's fully rough constant)
+  // k-epsilon: the standard constants and the initial state
+  double c_mu = 0.09, c1 = 1.44, c2 = 1.92, sigma_k = 1.0, sigma_e = 1.3;
+  double initial_k = 0, initial_epsilon = 0;  // m^2/s^2, m^2/s^3
   bool on() const { return model != TurbulenceModel::None; }
 };
 

@@ -4,8 +4,8 @@
 
 namespace ondine {
 
-// f(tag) for each field a checkpoint carries: the state, the open boundaries' roles where
-// allocated, and with refinement zones the APR fields (level, role, mother flag and
+// f(tag) for each field a checkpoint carries: the state, the open boundaries' roles and
+// k-epsilon's k and epsilon where allocated, and with refinement zones the APR fields (level, role, mother flag and
 // mother's id of each particle)
 template <int D, class F>
 void for_each_checkpoint_field(const ParticleSet<D>& p, bool refinement, F&& f) {
@@ -15,6 +15,10 @@ void for_each_checkpoint_field(const ParticleSet<D>& p, bool refinement, F&& f) 
   f(field::Mass{});
   f(field::GlobalId{});
   if (p.has(field::OpenRole{})) f(field::OpenRole{});
+  if (p.has(field::TurbulentKineticEnergy{})) {  // k-epsilon's transported state
+    f(field::TurbulentKineticEnergy{});
+    f(field::DissipationRate{});
+  }
   if (!refinement) return;
   f(field::AprBirthLevel{});
   f(field::AprLevel{});

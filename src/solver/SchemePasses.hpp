@@ -85,16 +85,21 @@ void transport_velocity(const PassContext<D>& c) {
 
 // the turbulence model's nu_T (V&I §4.1.1) and, with the log-law wall function (Walls), u_* and y+
 // (kernels/turbulence/EddyViscosityPass.hpp)
-template <int D, class K, bool Walls>
+template <int D, class K, bool Walls, bool KEps>
 void eddy_viscosity(const PassContext<D>& c) {
   const K W(c.R);
-  if constexpr (Walls)
-    Kokkos::parallel_for("ondine::EddyViscosity+wall_function", range(c),
-                         EddyViscosityPass<D, K, true>{c.list, c.box, W, c.R * c.R, c.x, c.u, c.rho, c.m, c.mixing_length, c.nu_T,
-                                                       c.wall, c.wall_cells, c.log_law, 0.05 * c.R, c.u_star, c.y_plus});
-  else
-    Kokkos::parallel_for("ondine::EddyViscosity", range(c),
-                         EddyViscosityPass<D, K, false>{c.list, c.box, W, c.R * c.R, c.x, c.u, c.rho, c.m, c.mixing_length, c.nu_T});
+  Kokkos::parallel_for(Walls ? "ondine::EddyViscosity+wall_function" : "ondine::EddyViscosity", range(c),
+                       EddyViscosityPass<D, K, Walls, KEps>{c.list, c.box, W, c.R * c.R, c.x, c.u, c.rho, c.m, c.mixing_length, c.nu_T,
+                                                            c.wall, c.wall_cells, c.log_law, 0.05 * c.R, c.u_star, c.y_plus, c.k,
+                                                            c.eps, c.k_eps.c_mu});
+}
+
+// k-epsilon: the production and diffusion rates of k and epsilon (kernels/turbulence/KEpsilon.hpp)
+template <int D, class K>
+void k_epsilon_rates(const PassContext<D>& c) {
+  Kokkos::parallel_for("ondine::KEpsilon::rates", range(c),
+                       KEpsilonRates<D, K>{c.list, c.box, K(c.R), c.R * c.R, c.x, c.u, c.rho, c.m, c.k, c.eps, c.nu_T, c.nu, c.k_eps,
+                                           c.dk, c.deps});
 }
 
 // max_i kappa_i of the no-slip wall term (4.85) (kernels/WallFluxPass.hpp)
@@ -213,8 +218,12 @@ CompiledScheme<D> compile(const Scene& s) {
   c.renormalised_continuity = walls ? &renormalised_continuity<D, K, true> : &renormalised_continuity<D, K, false>;
   c.free_surface = walls ? &free_surface<D, K, true> : &free_surface<D, K, false>;
   c.wall_stiffness = &wall_stiffness<D, K>;
-  if (s.turbulence.on())
-    c.eddy_viscosity = walls && s.turbulence.wall_function != WallLaw::None ? &eddy_viscosity<D, K, true> : &eddy_viscosity<D, K, false>;
+  if (s.turbulence.on()) {
+    const bool law = walls && s.turbulence.wall_function != WallLaw::None, keps = s.turbulence.model == TurbulenceModel::KEpsilon;
+    c.eddy_viscosity = law ? (keps ? &eddy_viscosity<D, K, true, true> : &eddy_viscosity<D, K, true, false>)
+                           : (keps ? &eddy_viscosity<D, K, false, true> : &eddy_viscosity<D, K, false, false>);
+    if (keps) c.k_epsilon_rates = &k_epsilon_rates<D, K>;
+  }
   if (s.ale) c.transport_velocity = walls ? &transport_velocity<D, K, true> : &transport_velocity<D, K, false>;
   c.shifting = walls ? &shifting<D, K, true> : &shifting<D, K, false>;
   c.probe_sum = levels ? &probe_sum<D, K, true> : &probe_sum<D, K, false>;

@@ -68,6 +68,10 @@ PassContext<D> Simulation<D>::context(const LevelSpan<D>& L) const {
   take(c.nu_T, field::EddyViscosity{});
   take(c.u_star, field::FrictionVelocity{});
   take(c.y_plus, field::YPlus{});
+  take(c.k, field::TurbulentKineticEnergy{});
+  take(c.eps, field::DissipationRate{});
+  take(c.dk, field::TurbulentKineticEnergyRate{});
+  take(c.deps, field::DissipationRateRate{});
   for (int k = 0; k < D; ++k) c.body[k] = scene_.gravity[k] + scene_.body_force[k];
   // the pair terms' coefficients at the level's radius; the lattice factor scales the plain
   // Morris term, the consistent one has its own weights
@@ -89,6 +93,7 @@ PassContext<D> Simulation<D>::context(const LevelSpan<D>& L) const {
     const Turbulence& tu = scene_.turbulence;
     c.mixing_length = MixingLength<D>{tu.model == TurbulenceModel::Smagorinsky ? tu.smagorinsky_constant * L.dx : tu.length, tu.axis,
                                       tu.kappa, tu.bed, tu.depth};
+    c.k_eps = KEpsilonConstants{tu.c_mu, tu.c1, tu.c2, tu.sigma_k, tu.sigma_e, 1e-10 * tu.initial_k, 1e-10 * tu.initial_epsilon};
     c.log_law = LogLaw::make(tu.kappa, scene_.nu, tu.smooth_constant, tu.wall_function == WallLaw::Rough ? tu.roughness : 0.0,
                              tu.rough_constant);
   }

@@ -1,9 +1,13 @@
 #pragma once
-// turbulence: the eddy viscosity nu_T of the mixing-length or Smagorinsky model (V&I §4.1.1) at
-// every stage before the flux, from that stage's velocities (kernels/turbulence/EddyViscosityPass.hpp),
-// read by the Morris term with nu + nu_T (kernels/terms/EddyMorrisViscosity.hpp); with the log-law
-// wall function also u_* and y+ next to no-slip walls (kernels/wall/WallFunction.hpp). The halo
-// copies get nu_T, which the pair term reads on both sides.
+// turbulence: the eddy viscosity nu_T of the model (V&I §4.1.1) at every stage before the flux,
+// from that stage's state (kernels/turbulence/EddyViscosityPass.hpp), read by the Morris term with
+// nu + nu_T (kernels/terms/EddyMorrisViscosity.hpp); with the log-law wall function also u_* and y+
+// next to no-slip walls (kernels/wall/WallFunction.hpp). The halo copies get nu_T, which the pair
+// term reads on both sides. With k-epsilon, k and epsilon are particle fields (in checkpoints),
+// set to the case's initial values at the start and advanced at each step's end over the step
+// (kernels/turbulence/KEpsilon.hpp: production and diffusion from the end state, destruction
+// implicit), split from the Runge-Kutta step of the flow.
+#include "kernels/turbulence/KEpsilon.hpp"
 #include "solver/StepState.hpp"
 #include "solver/StepHook.hpp"
 
@@ -12,17 +16,48 @@ namespace ondine {
 template <int D>
 class EddyViscosity final : public StepHook<D> {
  public:
+  explicit EddyViscosity(const Scene& s) : k_eps_(s.turbulence.model == TurbulenceModel::KEpsilon) {}
   const char* name() const override { return "eddy_viscosity"; }
   void allocate(ParticleSet<D>& p) override {
     p.allocate(field::EddyViscosity{});
     p.allocate(field::FrictionVelocity{});
     p.allocate(field::YPlus{});
+    if (!k_eps_) return;
+    p.allocate(field::TurbulentKineticEnergy{});
+    p.allocate(field::DissipationRate{});
+    p.allocate(field::TurbulentKineticEnergyRate{});
+    p.allocate(field::DissipationRateRate{});
+  }
+  void start(StepState<D>& s, const CheckpointSlice* restart) override {
+    if (!k_eps_ || restart) return;  // a restart reads k and epsilon from its checkpoint
+    ParticleSet<D>& p = s.particles();
+    Kokkos::deep_copy(p.get(field::TurbulentKineticEnergy{}), s.scene().turbulence.initial_k);
+    Kokkos::deep_copy(p.get(field::DissipationRate{}), s.scene().turbulence.initial_epsilon);
   }
   void before_flux(StepState<D>& s, bool /*later_stage*/) override {
     for (const LevelSpan<D>& L : s.levels())
       if (L.active_end > L.first) s.scheme().eddy_viscosity(s.context(L));
     s.domain().refresh(s.particles(), field::EddyViscosity{});
   }
+  void step_end(StepState<D>& s, double dt) override {
+    if (!k_eps_) return;
+    ParticleSet<D>& p = s.particles();
+    s.ensure_lists();
+    s.domain().refresh_state_halos(p);
+    s.domain().refresh(p, field::TurbulentKineticEnergy{}, field::DissipationRate{}, field::EddyViscosity{});
+    for (const LevelSpan<D>& L : s.levels())
+      if (L.active_end > L.first) s.scheme().k_epsilon_rates(s.context(L));
+    const PassContext<D> c = s.context();
+    KEpsilonUpdate<D> update{dt, c.k_eps, c.log_law.kappa, c.log_law.nu, c.log_law.yc, c.k, c.eps, c.dk, c.deps};
+    if (s.scene().turbulence.wall_function != WallLaw::None) {
+      update.u_star = c.u_star;
+      update.y_plus = c.y_plus;
+    }
+    Kokkos::parallel_for("ondine::KEpsilon::update", Kokkos::RangePolicy<ExecSpace>(0, s.owned()), update);
+  }
+
+ private:
+  bool k_eps_;
 };
 
 }  // namespace ondine

@@ -18,7 +18,7 @@ namespace ondine {
 template <int D>
 std::vector<std::unique_ptr<StepHook<D>>> make_step_hooks(const Scene& s, const CheckpointSlice* restart) {
   std::vector<std::unique_ptr<StepHook<D>>> list;
-  if (s.turbulence.on()) list.push_back(std::make_unique<EddyViscosity<D>>());
+  if (s.turbulence.on()) list.push_back(std::make_unique<EddyViscosity<D>>(s));
   if (s.ale) list.push_back(std::make_unique<TransportVelocity<D>>());
   if (s.shifting) list.push_back(std::make_unique<ParticleShifting<D>>());
   if (!s.walls.empty()) list.push_back(std::make_unique<ImpermeabilityGuard<D>>());
