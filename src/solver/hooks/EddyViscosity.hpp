@@ -1,6 +1,8 @@
 #pragma once
-// turbulence: the eddy viscosity nu_T of the model (V&I §4.1.1) at every stage before the flux,
-// from that stage's state (kernels/turbulence/EddyViscosityPass.hpp), read by the Morris term with
+// turbulence: the eddy viscosity nu_T of the model (V&I §4.1.1) before the flux, from the stage's
+// state (kernels/turbulence/EddyViscosityPass.hpp): at every stage, or with scheme.density_gradient:
+// step at a step's first stage only and held through the others, as the density gradient is
+// (the owned particles carry it through a migration); read by the Morris term with
 // nu + nu_T (kernels/terms/EddyMorrisViscosity.hpp); with the log-law wall function also u_* and y+
 // next to no-slip walls (kernels/wall/WallFunction.hpp). The halo copies get nu_T, which the pair
 // term reads on both sides. With k-epsilon, k and epsilon are particle fields (in checkpoints),
@@ -34,10 +36,11 @@ class EddyViscosity final : public StepHook<D> {
     Kokkos::deep_copy(p.get(field::TurbulentKineticEnergy{}), s.scene().turbulence.initial_k);
     Kokkos::deep_copy(p.get(field::DissipationRate{}), s.scene().turbulence.initial_epsilon);
   }
-  void before_flux(StepState<D>& s, bool /*later_stage*/) override {
-    for (const LevelSpan<D>& L : s.levels())
-      if (L.active_end > L.first) s.scheme().eddy_viscosity(s.context(L));
-    s.domain().refresh(s.particles(), field::EddyViscosity{});
+  void before_flux(StepState<D>& s, bool later_stage) override {
+    if (!(later_stage && s.scene().density_gradient_once_per_step))
+      for (const LevelSpan<D>& L : s.levels())
+        if (L.active_end > L.first) s.scheme().eddy_viscosity(s.context(L));
+    s.domain().refresh(s.particles(), field::EddyViscosity{});  // a list rebuilt since may have made new halo copies
   }
   void step_end(StepState<D>& s, double dt) override {
     if (!k_eps_) return;
