@@ -51,11 +51,11 @@ ONDINE_FIELD(EddyViscosity, "eddy_viscosity", double, false);
 ONDINE_FIELD(FrictionVelocity, "friction_velocity", double, false);
 ONDINE_FIELD(YPlus, "y_plus", double, false);
 // k-epsilon: the turbulent kinetic energy k and its dissipation rate epsilon, carried by the
-// particles, and their production-and-diffusion rates of the step's end (not written)
+// particles, and their values at the step's end before the wall function's (scratch, not written)
 ONDINE_FIELD(TurbulentKineticEnergy, "k", double, false);
 ONDINE_FIELD(DissipationRate, "epsilon", double, false);
-ONDINE_FIELD_(TurbulentKineticEnergyRate, "k_rate", double, false, false);
-ONDINE_FIELD_(DissipationRateRate, "epsilon_rate", double, false, false);
+ONDINE_FIELD_(TurbulentKineticEnergyNext, "k_next", double, false, false);
+ONDINE_FIELD_(DissipationRateNext, "epsilon_next", double, false, false);
 // Integrator stage storage (not written to snapshots): the state y0 at the start
 // of the step and the RK4 weighted sum of the stage derivatives. Particle fields,
 // so that they follow a particle that changes rank in the middle of a step.

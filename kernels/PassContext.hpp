@@ -62,10 +62,10 @@ struct PassContext {
   field_view_t<field::YPlus, D> y_plus;
   MixingLength<D> mixing_length;  // L(x) of the model at this level's spacing
   LogLaw log_law;
-  field_view_t<field::TurbulentKineticEnergy, D> k;  // k-epsilon: the transported k and epsilon, their rates
+  field_view_t<field::TurbulentKineticEnergy, D> k;  // k-epsilon: the transported k and epsilon, their next values
   field_view_t<field::DissipationRate, D> eps;
-  field_view_t<field::TurbulentKineticEnergyRate, D> dk;
-  field_view_t<field::DissipationRateRate, D> deps;
+  field_view_t<field::TurbulentKineticEnergyNext, D> k_next;
+  field_view_t<field::DissipationRateNext, D> eps_next;
   KEpsilonConstants k_eps;
   double clearance = 0;            // dx / 2 of the level: the wall-ward correction acts closer than this
   bool velocity_muscl = false;     // scheme.wall_velocity_reconstruction: the MUSCL state of u (4.30)

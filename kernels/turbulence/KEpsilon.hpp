@@ -6,11 +6,14 @@
 //   depsilon/dt = (epsilon / k) (C1 P_k - C2 epsilon) + div((nu + nu_T / sigma_epsilon) grad epsilon),
 // the strain from the renormalised velocity gradient (2.42)-(2.44), the diffusion in the Morris
 // form with the pair's diffusivities summed, as the viscous term has it:
-//   div(G grad f)_i = sum_j w_j (G_i + G_j) (f_i - f_j) W'(r)/r.
-// KEpsilonRates gathers the production and diffusion (the explicit part); KEpsilonUpdate advances
-// k and epsilon over the step with the destruction terms implicit (linearised: positive for any
-// step), and on the particles in the log layer of a wall function sets the law's
-// k = u_*^2 / sqrt(C_mu), epsilon = u_*^3 / (kappa y).
+//   div(G grad f)_i = sum_j |F_ij| G_ij (f_j - f_i),  |F_ij| = -w_j W'(r)/r,  G_ij = G_i + G_j.
+// KEpsilonStep advances k and epsilon over the step dt from the step's end state, the production
+// and the neighbours' part of the diffusion explicit, the destruction and the diagonal of the
+// diffusion implicit (linearised), so that both stay positive for any step:
+//   k1 = (k + dt (P_k + sum |F| G k_j)) / (1 + dt (epsilon / k + sum |F| G)),
+//   epsilon1 = (epsilon + dt (C1 (epsilon / k) P_k + sum |F| G epsilon_j)) / (1 + dt (C2 epsilon / k + sum |F| G)),
+// into scratch fields; KEpsilonUpdate takes them, and on the particles in the log layer of a wall
+// function sets the law's k = u_*^2 / sqrt(C_mu), epsilon = u_*^3 / (kappa y).
 #include "kernels/Fields.hpp"
 #include "kernels/NeighbourLoops.hpp"
 #include "kernels/VelocityGradientSum.hpp"
@@ -21,10 +24,11 @@ namespace ondine {
 struct KEpsilonConstants {
   double c_mu = 0.09, c1 = 1.44, c2 = 1.92, sigma_k = 1.0, sigma_e = 1.3;
   double k_min = 0, e_min = 0;  // floors (1e-10 of the initial state)
+  double dt = 0;                // the step KEpsilonStep advances over (set by the hook)
 };
 
 template <int D, class Kernel>
-struct KEpsilonRates {
+struct KEpsilonStep {
   NeighbourList<D> list;
   PeriodicBox<D> box;
   Kernel W;
@@ -38,45 +42,50 @@ struct KEpsilonRates {
   field_view_t<field::EddyViscosity, D> nu_T;
   double nu;
   KEpsilonConstants c;
-  field_view_t<field::TurbulentKineticEnergyRate, D> dk;
-  field_view_t<field::DissipationRateRate, D> deps;
+  field_view_t<field::TurbulentKineticEnergyNext, D> k_next;
+  field_view_t<field::DissipationRateNext, D> eps_next;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<D> xi = load<D>(x, i), ui = load<D>(u, i);
     const double ki = k(i), ei = eps(i), Gk = nu + nu_T(i) / c.sigma_k, Ge = nu + nu_T(i) / c.sigma_e;
     VelocityGradientSum<D> S;
-    double Dk = 0, De = 0;
+    double Ak = 0, Bk = 0, Ae = 0, Be = 0;  // sum |F| G f_j and sum |F| G, for k and epsilon
     for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>& xij, const double r) {
-      const double w = m(j) / rho(j), f = w * W.derivative(r) / r;
-      S.add(w, xij, f / w * xij, load<D>(u, j) - ui);
-      Dk += f * (Gk + nu + nu_T(j) / c.sigma_k) * (ki - k(j));
-      De += f * (Ge + nu + nu_T(j) / c.sigma_e) * (ei - eps(j));
+      const double w = m(j) / rho(j), dWr = W.derivative(r) / r;
+      S.add(w, xij, dWr * xij, load<D>(u, j) - ui);
+      const double F = -w * dWr;  // >= 0
+      const double gk = F * (Gk + nu + nu_T(j) / c.sigma_k), ge = F * (Ge + nu + nu_T(j) / c.sigma_e);
+      Ak += gk * k(j);
+      Bk += gk;
+      Ae += ge * eps(j);
+      Be += ge;
     });
     const double s = strain_rate_magnitude<D>(S.gradient());
-    const double P = nu_T(i) * s * s;
-    dk(i) = P + Dk;
-    deps(i) = c.c1 * ei / ki * P + De;
+    const double P = nu_T(i) * s * s, dt = c.dt;
+    k_next(i) = (ki + dt * (P + Ak)) / (1.0 + dt * (ei / ki + Bk));
+    eps_next(i) = (ei + dt * (c.c1 * ei / ki * P + Ae)) / (1.0 + dt * (c.c2 * ei / ki + Be));
   }
 };
 
 template <int D>
 struct KEpsilonUpdate {
-  double dt;
   KEpsilonConstants c;
-  double kappa, nu, y_plus_log;  // the law's kappa, nu and y+_c (the log layer starts above it)
+  double kappa, nu;
+  double y_plus_log;  // the log layer starts above this y+ (the smooth law's y+_c; 0 on a rough wall)
+  double y_min;       // a rough wall's k_s: closer particles read the law at k_s (0 on a smooth wall)
   field_view_t<field::TurbulentKineticEnergy, D> k;
   field_view_t<field::DissipationRate, D> eps;
-  field_view_t<field::TurbulentKineticEnergyRate, D> dk;
-  field_view_t<field::DissipationRateRate, D> deps;
+  field_view_t<field::TurbulentKineticEnergyNext, D> k_next;
+  field_view_t<field::DissipationRateNext, D> eps_next;
   field_view_t<field::FrictionVelocity, D> u_star = {};  // allocated with a wall function
   field_view_t<field::YPlus, D> y_plus = {};
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
-    const double ki = k(i), ei = eps(i);
-    double kn = (ki + dt * dk(i)) / (1.0 + dt * ei / ki);
-    double en = (ei + dt * deps(i)) / (1.0 + dt * c.c2 * ei / ki);
-    if (u_star.data() != nullptr && y_plus(i) > y_plus_log) {
-      const double us = u_star(i), y = y_plus(i) * nu / us;
+    double kn = k_next(i), en = eps_next(i);
+    if (u_star.data() != nullptr && u_star(i) > 0.0 && y_plus(i) > y_plus_log) {
+      const double us = u_star(i);
+      double y = y_plus(i) * nu / us;
+      y = y > y_min ? y : y_min;
       kn = us * us / kmath::sqrt(c.c_mu);
       en = us * us * us / (kappa * y);
     }

@@ -28,3 +28,25 @@ struct NoSlipViscosity {
 };
 
 }  // namespace ondine::wall
+
+namespace ondine::wall {
+
+// The same no-slip term with a turbulence model and no wall function: the particle's
+// nu + nu_T,i in place of nu (the fluid pairs carry nu + nu_T on each side,
+// kernels/terms/EddyMorrisViscosity.hpp).
+template <int D>
+struct EddyNoSlipViscosity {
+  static constexpr const char* name = "wall_no_slip_eddy";
+  static EddyNoSlipViscosity from(const PassContext<D>& c) { return EddyNoSlipViscosity{c.nu, 0.05 * c.R, c.wall.no_slip, c.nu_T}; }
+  double nu;
+  double min_dn;                        // 0.05 R
+  Kokkos::View<int*, MemSpace> no_slip;  // per wall point: 1 no-slip, 0 slip
+  field_view_t<field::EddyViscosity, D> nu_T;
+  KOKKOS_INLINE_FUNCTION void point(const WallParticle<D>& p, const WallPoint<D>& w, WallSum<D>& s) const {
+    if (!no_slip(w.q)) return;
+    const double k = 2.0 * w.Wq / fluid_side_dn<D>(w.xiq, w.n, min_dn);
+    s.du += ((nu + nu_T(p.i)) * k) * (p.ui - w.uq);
+  }
+};
+
+}  // namespace ondine::wall

@@ -42,6 +42,9 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, std::i
     f.attribute("open_state", h.open.state);
     names.push_back("open_role");
   }
+  // k-epsilon's transported state (solver/CheckpointFields.hpp), where the run has it
+  for (const char* name : {"k", "epsilon"})
+    if (fields.count(name)) names.push_back(name);
   for (const std::string& name : names) {
     const auto it = fields.find(name);
     if (it == fields.end()) throw std::logic_error("write_checkpoint: field " + name + " not given");
@@ -108,6 +111,8 @@ CheckpointSlice read_checkpoint(const std::string& path, const Communicator& com
       if (!r.has("open_role")) throw CheckpointError(path + ": dataset 'open_role' is missing (the checkpoint of a run with open boundaries holds it)");
       names.push_back("open_role");
     }
+    for (const char* name : {"k", "epsilon"})  // written by a k-epsilon run
+      if (r.has(name)) names.push_back(name);
     const std::int64_t first = h.particles * comm.rank() / comm.size();
     s.rows = h.particles * (comm.rank() + 1) / comm.size() - first;
     for (const std::string& name : names) {

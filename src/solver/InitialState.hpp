@@ -153,7 +153,11 @@ template <int D>
 void load_checkpoint(ParticleSet<D>& p, const CheckpointSlice& c, bool refinement) {
   auto put = [&](auto tag) {
     using V = field_view_t<decltype(tag), D>;
-    const std::vector<double>& rows = c.fields.at(decltype(tag)::label);
+    const auto found = c.fields.find(decltype(tag)::label);
+    if (found == c.fields.end())
+      throw CheckpointError(std::string("the checkpoint has no dataset '") + decltype(tag)::label +
+                            "', which this case needs (k and epsilon: a checkpoint of a run without k-epsilon)");
+    const std::vector<double>& rows = found->second;
     const int w = exchange::width_of<V>();
     exchange::Rows dev("ondine::Restart::rows", c.rows, w);
     Kokkos::deep_copy(dev, Kokkos::View<const double**, Kokkos::LayoutRight, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(

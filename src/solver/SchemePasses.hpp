@@ -94,12 +94,12 @@ void eddy_viscosity(const PassContext<D>& c) {
                                                             c.eps, c.k_eps.c_mu});
 }
 
-// k-epsilon: the production and diffusion rates of k and epsilon (kernels/turbulence/KEpsilon.hpp)
+// k-epsilon: k and epsilon advanced over c.k_eps.dt into the scratch fields (kernels/turbulence/KEpsilon.hpp)
 template <int D, class K>
-void k_epsilon_rates(const PassContext<D>& c) {
-  Kokkos::parallel_for("ondine::KEpsilon::rates", range(c),
-                       KEpsilonRates<D, K>{c.list, c.box, K(c.R), c.R * c.R, c.x, c.u, c.rho, c.m, c.k, c.eps, c.nu_T, c.nu, c.k_eps,
-                                           c.dk, c.deps});
+void k_epsilon_step(const PassContext<D>& c) {
+  Kokkos::parallel_for("ondine::KEpsilon::step", range(c),
+                       KEpsilonStep<D, K>{c.list, c.box, K(c.R), c.R * c.R, c.x, c.u, c.rho, c.m, c.k, c.eps, c.nu_T, c.nu, c.k_eps,
+                                          c.k_next, c.eps_next});
 }
 
 // max_i kappa_i of the no-slip wall term (4.85) (kernels/WallFluxPass.hpp)
@@ -222,7 +222,7 @@ CompiledScheme<D> compile(const Scene& s) {
     const bool law = walls && s.turbulence.wall_function != WallLaw::None, keps = s.turbulence.model == TurbulenceModel::KEpsilon;
     c.eddy_viscosity = law ? (keps ? &eddy_viscosity<D, K, true, true> : &eddy_viscosity<D, K, true, false>)
                            : (keps ? &eddy_viscosity<D, K, false, true> : &eddy_viscosity<D, K, false, false>);
-    if (keps) c.k_epsilon_rates = &k_epsilon_rates<D, K>;
+    if (keps) c.k_epsilon_step = &k_epsilon_step<D, K>;
   }
   if (s.ale) c.transport_velocity = walls ? &transport_velocity<D, K, true> : &transport_velocity<D, K, false>;
   c.shifting = walls ? &shifting<D, K, true> : &shifting<D, K, false>;

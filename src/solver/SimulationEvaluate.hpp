@@ -70,8 +70,8 @@ PassContext<D> Simulation<D>::context(const LevelSpan<D>& L) const {
   take(c.y_plus, field::YPlus{});
   take(c.k, field::TurbulentKineticEnergy{});
   take(c.eps, field::DissipationRate{});
-  take(c.dk, field::TurbulentKineticEnergyRate{});
-  take(c.deps, field::DissipationRateRate{});
+  take(c.k_next, field::TurbulentKineticEnergyNext{});
+  take(c.eps_next, field::DissipationRateNext{});
   for (int k = 0; k < D; ++k) c.body[k] = scene_.gravity[k] + scene_.body_force[k];
   // the pair terms' coefficients at the level's radius; the lattice factor scales the plain
   // Morris term, the consistent one has its own weights

@@ -5,7 +5,7 @@
 //   wall::PressureFlux (4.22, 4.14, with the 2 P_min of 2.105) and wall::Continuity (4.25)
 //   always; wall::NoSlipViscosity (4.85) in viscous scenes, in its consistent form with
 //   the consistent Laplacian (kernels/ConsistentLaplacian.hpp); with a turbulence model's log-law
-//   wall function wall::WallFunction in its place.
+//   wall function wall::WallFunction in its place, without one wall::EddyNoSlipViscosity (nu + nu_T).
 #include "kernels/PassContext.hpp"
 #include "kernels/WallFluxPass.hpp"
 #include "kernels/wall/Continuity.hpp"
@@ -33,6 +33,8 @@ PassFunction<D> select_wall_flux(const Scene& s) {
   using detail::run_wall_flux;
   if (s.turbulence.wall_function != WallLaw::None)
     return &run_wall_flux<D, Kernel, wall::PressureFlux, wall::Continuity, wall::WallFunction<D>>;
+  if (s.turbulence.on())  // no wall function: (4.85) with nu + nu_T of the particle
+    return &run_wall_flux<D, Kernel, wall::PressureFlux, wall::Continuity, wall::EddyNoSlipViscosity<D>>;
   if (uses_consistent_laplacian(s))
     return &run_wall_flux<D, Kernel, wall::PressureFlux, wall::Continuity, wall::NoSlipViscosity<D, true>>;
   if (s.viscous_term != ViscousTerm::None)

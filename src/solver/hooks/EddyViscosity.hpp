@@ -7,8 +7,8 @@
 // next to no-slip walls (kernels/wall/WallFunction.hpp). The halo copies get nu_T, which the pair
 // term reads on both sides. With k-epsilon, k and epsilon are particle fields (in checkpoints),
 // set to the case's initial values at the start and advanced at each step's end over the step
-// (kernels/turbulence/KEpsilon.hpp: production and diffusion from the end state, destruction
-// implicit), split from the Runge-Kutta step of the flow.
+// (kernels/turbulence/KEpsilon.hpp: from the end state, the destruction and the diffusion's
+// diagonal implicit), split from the Runge-Kutta step of the flow.
 #include "kernels/turbulence/KEpsilon.hpp"
 #include "solver/StepState.hpp"
 #include "solver/StepHook.hpp"
@@ -27,8 +27,8 @@ class EddyViscosity final : public StepHook<D> {
     if (!k_eps_) return;
     p.allocate(field::TurbulentKineticEnergy{});
     p.allocate(field::DissipationRate{});
-    p.allocate(field::TurbulentKineticEnergyRate{});
-    p.allocate(field::DissipationRateRate{});
+    p.allocate(field::TurbulentKineticEnergyNext{});
+    p.allocate(field::DissipationRateNext{});
   }
   void start(StepState<D>& s, const CheckpointSlice* restart) override {
     if (!k_eps_ || restart) return;  // a restart reads k and epsilon from its checkpoint
@@ -49,9 +49,15 @@ class EddyViscosity final : public StepHook<D> {
     s.domain().refresh_state_halos(p);
     s.domain().refresh(p, field::TurbulentKineticEnergy{}, field::DissipationRate{}, field::EddyViscosity{});
     for (const LevelSpan<D>& L : s.levels())
-      if (L.active_end > L.first) s.scheme().k_epsilon_rates(s.context(L));
+      if (L.active_end > L.first) {
+        PassContext<D> c = s.context(L);
+        c.k_eps.dt = dt;
+        s.scheme().k_epsilon_step(c);
+      }
     const PassContext<D> c = s.context();
-    KEpsilonUpdate<D> update{dt, c.k_eps, c.log_law.kappa, c.log_law.nu, c.log_law.yc, c.k, c.eps, c.dk, c.deps};
+    const bool rough = c.log_law.rough;
+    KEpsilonUpdate<D> update{c.k_eps, c.log_law.kappa, c.log_law.nu, rough ? 0.0 : c.log_law.yc, rough ? c.log_law.ks : 0.0,
+                             c.k, c.eps, c.k_next, c.eps_next};
     if (s.scene().turbulence.wall_function != WallLaw::None) {
       update.u_star = c.u_star;
       update.y_plus = c.y_plus;
