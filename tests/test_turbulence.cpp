@@ -32,7 +32,6 @@ turbulence: )" + turbulence + "\n";
 
 // nu_T after one evaluation of the velocity field u(x, y) = (a0 x + a1 y, b0 x + b1 y), and the
 // particles' heights
-template <class F>
 std::pair<std::vector<double>, std::vector<double>> eddy_viscosity_of(Simulation<2>& sim, double a0, double a1, double b0, double b1) {
   disorder(sim, 0.2, 0.0, 0.0, 7);
   auto& p = sim.particles();
@@ -85,7 +84,7 @@ TEST_CASE("Smagorinsky: nu_T = (C_s dx)^2 |a| in simple shear, 0 in solid rotati
   const double a = 3.0, Cs = 0.12, dx = 0.025;
   {
     Simulation<2> sim = free_block("{model: smagorinsky}");
-    const auto [nu, z] = eddy_viscosity_of<void>(sim, 0.0, a, 0.0, 0.0);  // u = (a y, 0): sqrt(2 S:S) = |a|
+    const auto [nu, z] = eddy_viscosity_of(sim, 0.0, a, 0.0, 0.0);  // u = (a y, 0): sqrt(2 S:S) = |a|
     double worst = 0;
     for (double v : nu) worst = std::max(worst, std::abs(v / (Cs * dx * Cs * dx * a) - 1.0));
     INFO("worst relative error " << worst);
@@ -93,14 +92,14 @@ TEST_CASE("Smagorinsky: nu_T = (C_s dx)^2 |a| in simple shear, 0 in solid rotati
   }
   {
     Simulation<2> sim = free_block("{model: smagorinsky, smagorinsky_constant: 0.2}");
-    const auto [nu, z] = eddy_viscosity_of<void>(sim, 0.0, -a, a, 0.0);  // u = (-a y, a x): no strain
+    const auto [nu, z] = eddy_viscosity_of(sim, 0.0, -a, a, 0.0);  // u = (-a y, a x): no strain
     double worst = 0;
     for (double v : nu) worst = std::max(worst, std::abs(v));
     CHECK(worst < 1e-12 * 0.2 * dx * 0.2 * dx * a);
   }
   {
     Simulation<2> sim = free_block("{model: smagorinsky}");
-    const auto [nu, z] = eddy_viscosity_of<void>(sim, a, 0.0, 0.0, -a);  // pure strain (a x, -a y): sqrt(2 S:S) = 2|a|
+    const auto [nu, z] = eddy_viscosity_of(sim, a, 0.0, 0.0, -a);  // pure strain (a x, -a y): sqrt(2 S:S) = 2|a|
     double worst = 0;
     for (double v : nu) worst = std::max(worst, std::abs(v / (Cs * dx * Cs * dx * 2 * a) - 1.0));
     CHECK(worst < 1e-9);
@@ -111,7 +110,7 @@ TEST_CASE("Mixing length: nu_T = (kappa z sqrt(1 - z/H))^2 |du/dz| in the channe
   const double a = 2.0, H = 0.5, kappa = 0.41;
   {
     Simulation<2> sim = free_block("{model: mixing_length, mixing_length: {axis: 1, bed: 0.0, depth: 0.5}}");
-    const auto [nu, z] = eddy_viscosity_of<void>(sim, 0.0, a, 0.0, 0.0);
+    const auto [nu, z] = eddy_viscosity_of(sim, 0.0, a, 0.0, 0.0);
     double worst = 0;
     for (std::size_t i = 0; i < nu.size(); ++i) {
       const double zz = std::min(std::max(z[i], 0.0), H);
@@ -122,7 +121,7 @@ TEST_CASE("Mixing length: nu_T = (kappa z sqrt(1 - z/H))^2 |du/dz| in the channe
   }
   {
     Simulation<2> sim = free_block("{model: mixing_length, kappa: 0.4, mixing_length: {length: 0.01}}");
-    const auto [nu, z] = eddy_viscosity_of<void>(sim, 0.0, a, 0.0, 0.0);
+    const auto [nu, z] = eddy_viscosity_of(sim, 0.0, a, 0.0, 0.0);
     double worst = 0;
     for (double v : nu) worst = std::max(worst, std::abs(v / (1e-4 * a) - 1.0));
     CHECK(worst < 1e-9);
