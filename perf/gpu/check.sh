@@ -12,6 +12,7 @@
 #   bench     perf/ondine_bench --quick (the pair rate)
 #   unit      the unit tests (ondine_tests "[unit]")
 #   pairbench the hand-written OpenMP pair loop on the machine's cores (the yardstick)
+#   validate:NAME  `ondine validate --case NAME --level full` (limit 150 s)
 #   run:NAME,ARG,...  SPHERIC Test 2 with these `ondine run` arguments (commas for spaces),
 #             e.g. run:dx015,--set,discretisation.dx=0.015 (limit 150 s)
 # OUT_DIR gets log.txt, steps.json (each step's status and seconds) and results.tar.gz
@@ -76,13 +77,15 @@ for s in "${steps[@]}"; do
     bench)
       step bench 90 "$bin/ondine_bench" --quick --out "$work/runs/bench.json" ;;
     unit)
-      step unit 120 "$bin/ondine_tests" "[unit]" --reporter compact ;;
+      [ -x "$bin/ondine_tests" ] && step unit 120 "$bin/ondine_tests" "[unit]" --reporter compact ;;
     pairbench)
       if [ -f "$work/pairbench.cpp" ]; then
         step pairbench 60 bash -c "g++ -O3 -march=native -fopenmp $work/pairbench.cpp -o $work/pairbench && \
           for r in 1 2 3; do OMP_NUM_THREADS=\$(nproc) OMP_PROC_BIND=spread OMP_PLACES=threads $work/pairbench 300 20; done \
           | tee $work/runs/pairbench.jsonl"
       fi ;;
+    validate:*)
+      step "${s#validate:}" 150 "$bin/ondine" validate --case "${s#validate:}" --level full --out "$work/runs/${s#validate:}" ;;
     run:*)
       IFS=, read -r -a args <<< "${s#run:}"
       step "${args[0]}" 150 "$bin/ondine" run cases/spheric_test2_3d.yaml --quiet --out "$work/runs/${args[0]}" "${args[@]:1}" ;;
