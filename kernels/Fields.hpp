@@ -56,6 +56,12 @@ ONDINE_FIELD(TurbulentKineticEnergy, "k", double, false);
 ONDINE_FIELD(DissipationRate, "epsilon", double, false);
 ONDINE_FIELD_(TurbulentKineticEnergyNext, "k_next", double, false, false);
 ONDINE_FIELD_(DissipationRateNext, "epsilon_next", double, false, false);
+// The Langevin model (kernels/turbulence/Langevin.hpp): the kernel-filtered mean velocity <u>
+// [V&I 17] of the step's end, the velocity after the step's Langevin increment and the support's
+// centroid offset, then the corrected mean (scratch)
+ONDINE_FIELD(MeanVelocity, "mean_velocity", double, true);
+ONDINE_FIELD_(LangevinVelocity, "langevin_velocity", double, true, false);
+ONDINE_FIELD_(LangevinOffset, "langevin_offset", double, true, false);
 // Integrator stage storage (not written to snapshots): the state y0 at the start
 // of the step and the RK4 weighted sum of the stage derivatives. Particle fields,
 // so that they follow a particle that changes rank in the middle of a step.

@@ -11,6 +11,7 @@
 #include "kernels/WallSet.hpp"
 #include "kernels/turbulence/EddyViscosityPass.hpp"
 #include "kernels/turbulence/KEpsilon.hpp"
+#include "kernels/turbulence/Langevin.hpp"
 #include "kernels/apr/RefinementZones.hpp"
 
 namespace ondine {
@@ -67,6 +68,11 @@ struct PassContext {
   field_view_t<field::TurbulentKineticEnergyNext, D> k_next;
   field_view_t<field::DissipationRateNext, D> eps_next;
   KEpsilonConstants k_eps;
+  field_view_t<field::GlobalId, D> id;               // the Langevin model: its random stream's counter,
+  field_view_t<field::MeanVelocity, D> mean_u;       // <u> and the velocity after the step's increment
+  field_view_t<field::LangevinVelocity, D> u_langevin;
+  field_view_t<field::LangevinOffset, D> langevin_offset;
+  LangevinConstants langevin;
   double clearance = 0;            // dx / 2 of the level: the wall-ward correction acts closer than this
   bool velocity_muscl = false;     // scheme.wall_velocity_reconstruction: the MUSCL state of u (4.30)
   bool wall_state_only = false;    // wall tractions: the MUSCL state's pressure alone, no rho c u_n (wall sensors)

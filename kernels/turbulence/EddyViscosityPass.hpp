@@ -3,7 +3,8 @@
 //   nu_T,i = L(x_i)^2 sqrt(2 S_i:S_i),   S = (<grad u> + <grad u>^T) / 2,
 // with <grad u>_i the renormalised velocity gradient (2.42-2.44; kernels/VelocityGradientSum.hpp),
 // exact for a linear field on a support cut by a wall or the free surface, and
-//   L = kappa z sqrt(1 - z/H) (the channel's mixing length, z above the bed, 0 <= z <= H),
+//   L = kappa z sqrt(1 - z/H) (the channel's mixing length, z above the bed, 0 <= z <= H; in a
+//       plane channel between walls at the bed and the bed + 2 H, z from the nearer wall),
 //   L = a constant length (the mixing length's general form), or C_s dx (Smagorinsky);
 // with k-epsilon (KEps) nu_T = C_mu k^2 / epsilon of the particle's own k and epsilon
 // (kernels/turbulence/KEpsilon.hpp), no neighbour loop.
@@ -25,9 +26,11 @@ struct MixingLength {
   double constant = 0;  // used where axis < 0
   int axis = -1;
   double kappa = 0.41, bed = 0, depth = 1;
+  bool plane = false;  // depth is the half-width of a plane channel
   KOKKOS_INLINE_FUNCTION double operator()(const Vec<D>& x) const {
     if (axis < 0) return constant;
     double z = x[axis] - bed;
+    if (plane && z > depth) z = 2.0 * depth - z;
     z = z < 0.0 ? 0.0 : z > depth ? depth : z;
     return kappa * z * kmath::sqrt(1.0 - z / depth);
   }

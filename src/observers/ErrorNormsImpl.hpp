@@ -190,14 +190,21 @@ void open_channel(const Simulation<D>& sim, std::map<std::string, double>& e) {
   e["pressure_gradient_error"] = std::abs(gradient / poiseuille - 1);
 }
 
-// the turbulent open channel (reference.type log_law, V&I §4.1.1): the friction velocity of the
+// the turbulent channel (reference.type log_law, V&I §4.1.1-4.1.2): the friction velocity of the
 // momentum balance u_* = sqrt(F H) and the law of the wall function (kernels/turbulence/LogLaw.hpp),
-// u(z) = u_* (ln(z u_* / nu) / kappa + B) or u_* (ln(z / k_s) / kappa + B_r), z above the bed.
+// u(z) = u_* (ln(z u_* / nu) / kappa + B) or u_* (ln(z / k_s) / kappa + B_r), z above the bed (a
+// plane channel: from the nearer wall, H the half-width).
 // velocity_l2: over the particles at z+ >= 30 (the log layer's lower bound; with the channel's
-// mixing length the model's solution is the law up to the surface), relative L2 of u_x - u(z);
+// mixing length the model's solution is the law up to H), relative L2 of u_x - u(z);
 // velocity_l2_near_bed: the same for the particles within R of the bed; friction_velocity_error:
 // the mean u_* the wall function reads on the first row (z < dx) against sqrt(F H);
-// y_plus_first_row: that row's mean y+ (shown)
+// y_plus_first_row: that row's mean y+ (shown). The mean profile: u_x averaged over rows dx deep
+// (over x, and both halves of a plane channel), at each row's mean z:
+// mean_velocity_l2: its relative L2 against the law over the rows at z+ >= 30;
+// kappa_fit: u_* / the least-squares slope of the mean u against ln z over those rows with z <= H/2
+// (von Karman's constant the flow shows); kappa_error: |kappa_fit / kappa - 1|;
+// fluctuation_ratio (the Langevin model): sqrt(sum |u - u_row|^2 / sum (2d/3) k) over the log
+// layer's particles, 1 where the d velocity components carried hold their isotropic share of k.
 template <int D>
 void log_law(const Simulation<D>& sim, std::map<std::string, double>& e) {
   const Scene& scene = sim.scene();
@@ -213,10 +220,19 @@ void log_law(const Simulation<D>& sim, std::map<std::string, double>& e) {
   auto hu = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Velocity{}));
   auto hs = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::FrictionVelocity{}));
   auto hy = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::YPlus{}));
+  const bool has_k = tu.model == TurbulenceModel::Langevin;
+  auto hk = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), has_k ? p.get(field::TurbulentKineticEnergy{})
+                                                                           : field_view_t<field::TurbulentKineticEnergy, D>("k", 0));
   const int up = D - 1;
+  const auto height = [&](int i) {
+    const double z = hx(i, up) - ref.origin[up];
+    return ref.plane && z > H ? 2 * H - z : z;
+  };
+  const int rows = static_cast<int>(std::ceil(H / scene.dx));
+  std::vector<double> row(3 * rows, 0.0);  // per row: count, sum z, sum u_x
   double num = 0, den = 0, num_bed = 0, den_bed = 0, first_us = 0, first_yp = 0, first = 0;
   for (int i = 0; i < n; ++i) {  // a diagnostic at the end of the run, on the host mirror
-    const double z = hx(i, up) - ref.origin[up];
+    const double z = height(i);
     if (!(z > 0)) continue;
     const double ue = law.speed(us, z);
     const double d2 = (hu(i, 0) - ue) * (hu(i, 0) - ue);
@@ -233,13 +249,52 @@ void log_law(const Simulation<D>& sim, std::map<std::string, double>& e) {
       first_yp += hy(i);
       first += 1;
     }
+    const int b = std::min(rows - 1, static_cast<int>(z / scene.dx));
+    row[3 * b] += 1, row[3 * b + 1] += z, row[3 * b + 2] += hu(i, 0);
   }
+  for (double& v : row) v = comm.sum(v);
   num = comm.sum(num), den = comm.sum(den), first = comm.sum(first);
   if (den > 0) e["velocity_l2"] = std::sqrt(num / den);
   if (comm.sum(den_bed) > 0) e["velocity_l2_near_bed"] = std::sqrt(comm.sum(num_bed) / comm.sum(den_bed));
   if (first > 0) {
     e["friction_velocity_error"] = std::abs(comm.sum(first_us) / first / us - 1.0);
     e["y_plus_first_row"] = comm.sum(first_yp) / first;
+  }
+  // the mean profile over rows
+  double mnum = 0, mden = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, fits = 0;
+  for (int b = 0; b < rows; ++b) {
+    if (row[3 * b] < 1) continue;
+    const double z = row[3 * b + 1] / row[3 * b], um = row[3 * b + 2] / row[3 * b];
+    if (z * us / scene.nu < 30.0) continue;
+    const double ue = law.speed(us, z);
+    mnum += (um - ue) * (um - ue), mden += ue * ue;
+    if (z > 0.5 * H) continue;
+    const double lz = std::log(z);
+    sx += lz, sy += um, sxx += lz * lz, sxy += lz * um, fits += 1;
+  }
+  if (mden > 0) e["mean_velocity_l2"] = std::sqrt(mnum / mden);
+  if (fits >= 3) {
+    const double slope = (fits * sxy - sx * sy) / (fits * sxx - sx * sx);
+    if (slope > 0) {
+      e["kappa_fit"] = us / slope;
+      e["kappa_error"] = std::abs(us / slope / tu.kappa - 1.0);
+    }
+  }
+  if (has_k) {
+    double f2 = 0, k2 = 0;
+    for (int i = 0; i < n; ++i) {
+      const double z = height(i);
+      if (!(z > 0) || z * us / scene.nu < 30.0) continue;
+      const int b = std::min(rows - 1, static_cast<int>(z / scene.dx));
+      double d2 = 0;
+      for (int a = 0; a < D; ++a) {
+        const double da = hu(i, a) - (a == 0 ? row[3 * b + 2] / row[3 * b] : 0.0);
+        d2 += da * da;
+      }
+      f2 += d2, k2 += 2.0 * D / 3.0 * hk(i);
+    }
+    f2 = comm.sum(f2), k2 = comm.sum(k2);
+    if (k2 > 0) e["fluctuation_ratio"] = std::sqrt(f2 / k2);
   }
 }
 

@@ -134,7 +134,7 @@ void read_wave_gauges(const Reader& r, YAML::Node& root, Scene& s) {
 void read_reference(const Reader& r, YAML::Node& root, Scene& s) {
   const int D = s.dimension;
   if (const YAML::Node rf = root["reference"]) {
-    r.only_keys(rf, "reference", {"type", "length", "origin", "velocity", "file", "wall", "from"});
+    r.only_keys(rf, "reference", {"type", "length", "origin", "velocity", "file", "wall", "from", "plane"});
     const std::string t = r.word(r.required(rf, "reference", "type"), "reference.type",
                                  {"poiseuille", "couette", "hydrostatic", "martin_moyce", "ghia_re100", "ghia_re1000", "duct",
                                   "spheric_test2", "cylinder", "open_channel", "log_law"});
@@ -166,6 +166,9 @@ void read_reference(const Reader& r, YAML::Node& root, Scene& s) {
         r.fail(rf["type"], "reference.type", "log_law compares with the law of turbulence.wall_function, which the case does not set");
       if (!(s.body_force[0] + s.gravity[0] > 0))
         r.fail(rf["type"], "reference.type", "log_law needs a driving force along +x (forces.body_force or gravity): u_* = sqrt(F H)");
+      if (rf["plane"]) s.reference.plane = r.boolean(rf["plane"], "reference.plane");
+    } else if (rf["plane"]) {
+      r.fail(rf["plane"], "reference.plane", "only a log_law reference takes plane (a plane channel of half-width length)");
     }
     if (s.reference.kind == ReferenceKind::Cylinder) {
       // a body in a stream: its wall, the stream's speed, the start of the averaging

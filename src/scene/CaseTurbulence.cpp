@@ -8,34 +8,56 @@ void read_turbulence(const Reader& r, YAML::Node& root, Scene& s) {
   const YAML::Node t = root["turbulence"];
   if (!t) return;
   const int D = s.dimension;
-  r.only_keys(t, "turbulence", {"model", "kappa", "mixing_length", "smagorinsky_constant", "wall_function", "roughness", "k_epsilon"});
+  r.only_keys(t, "turbulence", {"model", "kappa", "mixing_length", "smagorinsky_constant", "wall_function", "roughness", "k_epsilon", "langevin"});
   Turbulence& m = s.turbulence;
-  const std::string model = r.word(r.required(t, "turbulence", "model"), "turbulence.model", {"none", "mixing_length", "smagorinsky", "k_epsilon"});
+  const std::string model = r.word(r.required(t, "turbulence", "model"), "turbulence.model", {"none", "mixing_length", "smagorinsky", "k_epsilon", "langevin"});
   m.model = model == "mixing_length" ? TurbulenceModel::MixingLength
             : model == "smagorinsky" ? TurbulenceModel::Smagorinsky
             : model == "k_epsilon"   ? TurbulenceModel::KEpsilon
+            : model == "langevin"    ? TurbulenceModel::Langevin
                                      : TurbulenceModel::None;
+  const bool uses_length = m.model == TurbulenceModel::MixingLength || m.model == TurbulenceModel::Langevin;
   if (t["kappa"]) {
     m.kappa = r.positive(t["kappa"], "turbulence.kappa", " (von Karman's constant)");
     if (m.kappa > 1) r.fail(t["kappa"], "turbulence.kappa", "expected a value in (0, 1] (0.41 in the log law)");
   }
   if (const YAML::Node l = t["mixing_length"]) {
-    if (m.model != TurbulenceModel::MixingLength) r.fail(l, "turbulence.mixing_length", "is read with turbulence.model: mixing_length only");
-    r.only_keys(l, "turbulence.mixing_length", {"length", "axis", "bed", "depth"});
+    if (!uses_length) r.fail(l, "turbulence.mixing_length", "is read with turbulence.model: mixing_length or langevin only");
+    r.only_keys(l, "turbulence.mixing_length", {"length", "axis", "bed", "depth", "half_width"});
     if (l["length"]) {
-      if (l["axis"] || l["bed"] || l["depth"])
+      if (l["axis"] || l["bed"] || l["depth"] || l["half_width"])
         r.fail(l["length"], "turbulence.mixing_length.length", "give a constant length or the channel's axis, bed and depth, not both");
       m.length = r.positive(l["length"], "turbulence.mixing_length.length", " (m)");
     } else {
       const YAML::Node axis = r.required(l, "turbulence.mixing_length", "axis");
       m.axis = static_cast<int>(r.integer(axis, "turbulence.mixing_length.axis", 0, D - 1));
       m.bed = r.number(r.required(l, "turbulence.mixing_length", "bed"), "turbulence.mixing_length.bed", "the bed's coordinate along axis (m)");
-      m.depth = r.positive(r.required(l, "turbulence.mixing_length", "depth"), "turbulence.mixing_length.depth", " (m, the flow depth H)");
+      if (l["half_width"]) {  // a plane channel between walls at bed and bed + 2 h: z from the nearer wall, H = h
+        if (l["depth"]) r.fail(l["half_width"], "turbulence.mixing_length.half_width", "give the open channel's depth or the plane channel's half_width, not both");
+        m.depth = r.positive(l["half_width"], "turbulence.mixing_length.half_width", " (m, half the distance between the walls)");
+        m.plane = true;
+      } else {
+        m.depth = r.positive(r.required(l, "turbulence.mixing_length", "depth"), "turbulence.mixing_length.depth", " (m, the flow depth H)");
+      }
     }
-  } else if (m.model == TurbulenceModel::MixingLength) {
+  } else if (uses_length) {
     r.fail(t, "turbulence.mixing_length",
-           "is required with turbulence.model: mixing_length: {length: L} or the channel's {axis: k, bed: z0, depth: H} "
-           "(L_m = kappa z sqrt(1 - z/H))");
+           "is required with turbulence.model: " + model + ": {length: L}, the open channel's {axis: k, bed: z0, depth: H} "
+           "or the plane channel's {axis: k, bed: z0, half_width: h} (L_m = kappa z sqrt(1 - z/H))");
+  }
+  if (const YAML::Node g = t["langevin"]) {
+    if (m.model != TurbulenceModel::Langevin) r.fail(g, "turbulence.langevin", "is read with turbulence.model: langevin only");
+    r.only_keys(g, "turbulence.langevin", {"c1", "c2", "c0", "seed"});
+    if (g["c1"]) m.langevin_c1 = r.positive(g["c1"], "turbulence.langevin.c1", " (the drift's return to isotropy)");
+    if (g["c2"]) m.langevin_c2 = r.non_negative(g["c2"], "turbulence.langevin.c2", " (the drift's isotropisation of production)");
+    if (g["c0"]) m.langevin_c0 = r.positive(g["c0"], "turbulence.langevin.c0", " (the diffusion's constant)");
+    if (g["seed"]) m.seed = static_cast<std::uint64_t>(r.integer(g["seed"], "turbulence.langevin.seed", 0, 9007199254740991LL));
+  }
+  if (m.model == TurbulenceModel::Langevin) {
+    // C0 of Pope's consistency relation with the mixing length's P = epsilon (kernels/turbulence/Langevin.hpp)
+    if (!(m.langevin_c0 > 0)) m.langevin_c0 = 2.0 / D * (m.langevin_c1 - 1.0 + m.langevin_c2);
+    if (!(m.langevin_c0 > 0))
+      r.fail(t["langevin"], "turbulence.langevin", "C0 = (2/d) (c1 - 1 + c2) must be positive: expected c1 + c2 > 1, or give c0");
   }
   if (t["smagorinsky_constant"]) {
     if (m.model != TurbulenceModel::Smagorinsky)

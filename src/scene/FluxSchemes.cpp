@@ -14,7 +14,7 @@ FluxKey flux_key(const Scene& s) {
   }
   switch (s.viscous_term) {
     case ViscousTerm::Morris:
-      k.viscosity = s.turbulence.on()                ? PairViscosity::EddyMorris
+      k.viscosity = s.turbulence.eddy_viscous()      ? PairViscosity::EddyMorris
                     : uses_consistent_laplacian(s) ? PairViscosity::ConsistentMorris
                                                    : PairViscosity::Morris;
       break;

@@ -26,7 +26,9 @@ enum class TimeIntegrator { RK4, PredictorCorrector };
 // Eddy-viscosity turbulence models (Violeau & Issa, seed 000 §4.1.1): nu_T = L^2 sqrt(2 S:S)
 // with the mixing length L_m or Smagorinsky's C_s dx, or nu_T = C_mu k^2 / epsilon with k and
 // epsilon transported (k-epsilon, Launder & Spalding 1974); the log-law wall function on no-slip walls.
-enum class TurbulenceModel { None, MixingLength, Smagorinsky, KEpsilon };
+// The Generalised Langevin Model (V&I §4.1.2) moves the particles' velocities stochastically
+// about their kernel-filtered mean, with epsilon from the mixing length.
+enum class TurbulenceModel { None, MixingLength, Smagorinsky, KEpsilon, Langevin };
 enum class WallLaw { None, Smooth, Rough };
 
 struct Turbulence {
@@ -37,6 +39,7 @@ struct Turbulence {
   double length = 0;
   int axis = -1;  // -1: no channel form
   double bed = 0, depth = 0;
+  bool plane = false;  // a plane channel between walls at bed and bed + 2 depth (depth: the half-width)
   double smagorinsky_constant = 0.12;  // C_s, filter width dx
   WallLaw wall_function = WallLaw::None;
   double smooth_constant = 5.2;  // u/u* = ln(y u*/nu)/kappa + B on a smooth wall
@@ -45,7 +48,12 @@ struct Turbulence {
   // k-epsilon: the standard constants and the initial state
   double c_mu = 0.09, c1 = 1.44, c2 = 1.92, sigma_k = 1.0, sigma_e = 1.3;
   double initial_k = 0, initial_epsilon = 0;  // m^2/s^2, m^2/s^3
+  // Langevin: the drift's constants (LRR-IP), C0 (negative: Pope's relation), the stream's seed
+  double langevin_c1 = 1.8, langevin_c2 = 0.6, langevin_c0 = -1;
+  std::uint64_t seed = 0;
   bool on() const { return model != TurbulenceModel::None; }
+  // the model's nu_T enters the viscous terms (the Langevin model's stress is its particles' motion)
+  bool eddy_viscous() const { return on() && model != TurbulenceModel::Langevin; }
 };
 
 struct Box {
@@ -106,11 +114,13 @@ struct Reference {
   // section, velocity = the inlet's mean speed U (m/s)
   // log_law: length = the flow depth H, origin = a point of the bed; the friction velocity
   // u_* = sqrt(F H) of the momentum balance (F: body force and gravity along x), the law of turbulence:
+  // (plane: a plane channel between walls at origin and origin + 2 length, length the half-width)
   std::string file;      // spheric_test2: the measured series (a path resolved against the case file's folder)
   // cylinder: length = D, velocity = U of the stream, the wall whose force gives C_D, C_L and St,
   // counted from time `from` (s, after the start-up)
   std::string wall;
   double from = 0;
+  bool plane = false;    // log_law: a plane channel
 };
 
 struct Probe {

@@ -102,6 +102,23 @@ void k_epsilon_step(const PassContext<D>& c) {
                                           c.k_next, c.eps_next});
 }
 
+// the Langevin model (kernels/turbulence/Langevin.hpp): the kernel-filtered means u~ into c.mean_u
+// and the supports' centroid offsets into c.langevin_offset
+template <int D, class K>
+void langevin_mean(const PassContext<D>& c) {
+  Kokkos::parallel_for("ondine::Langevin::mean", range(c), LangevinMean<D, K>{c.list, c.box, K(c.R), c.R * c.R, c.x, c.u, c.rho, c.m, c.mean_u,
+                                                                                  c.langevin_offset});
+}
+
+// ... then, from the means' gradient, the velocity after the step's increment over c.langevin.dt
+// into c.u_langevin, with nu_T, k and epsilon
+template <int D, class K>
+void langevin_step(const PassContext<D>& c) {
+  Kokkos::parallel_for("ondine::Langevin::step", range(c),
+                       LangevinStep<D, K>{c.list, c.box, K(c.R), c.R * c.R, c.x, c.u, c.rho, c.m, c.id, c.mixing_length, c.langevin,
+                                          c.mean_u, c.langevin_offset, c.nu_T, c.k, c.eps, c.u_langevin});
+}
+
 // max_i kappa_i of the no-slip wall term (4.85) (kernels/WallFluxPass.hpp)
 template <int D, class K>
 double wall_stiffness(const PassContext<D>& c) {
@@ -223,6 +240,10 @@ CompiledScheme<D> compile(const Scene& s) {
     c.eddy_viscosity = law ? (keps ? &eddy_viscosity<D, K, true, true> : &eddy_viscosity<D, K, true, false>)
                            : (keps ? &eddy_viscosity<D, K, false, true> : &eddy_viscosity<D, K, false, false>);
     if (keps) c.k_epsilon_step = &k_epsilon_step<D, K>;
+    if (s.turbulence.model == TurbulenceModel::Langevin) {
+      c.langevin_mean = &langevin_mean<D, K>;
+      c.langevin_step = &langevin_step<D, K>;
+    }
   }
   if (s.ale) c.transport_velocity = walls ? &transport_velocity<D, K, true> : &transport_velocity<D, K, false>;
   c.shifting = walls ? &shifting<D, K, true> : &shifting<D, K, false>;

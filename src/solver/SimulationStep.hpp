@@ -36,7 +36,7 @@ double Simulation<D>::time_step() const {
   // with a turbulence model the largest nu + nu_T bounds the viscous step (2.103) and, as the wall
   // function's stress u_*^2 = nu_eff u_t / y with nu_eff of the order of nu_T there, the wall term's
   double nu_max = scene_.nu;
-  if (p_.has(field::EddyViscosity{})) {
+  if (scene_.turbulence.eddy_viscous()) {
     double nu_T = 0;
     Kokkos::parallel_reduce("ondine::TimeStep::eddy_viscosity", Kokkos::RangePolicy<ExecSpace>(0, n),
                             MaxValue<std::decay_t<decltype(p_.get(field::EddyViscosity{}))>>{p_.get(field::EddyViscosity{})},

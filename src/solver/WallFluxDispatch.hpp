@@ -33,7 +33,7 @@ PassFunction<D> select_wall_flux(const Scene& s) {
   using detail::run_wall_flux;
   if (s.turbulence.wall_function != WallLaw::None)
     return &run_wall_flux<D, Kernel, wall::PressureFlux, wall::Continuity, wall::WallFunction<D>>;
-  if (s.turbulence.on())  // no wall function: (4.85) with nu + nu_T of the particle
+  if (s.turbulence.eddy_viscous())  // no wall function: (4.85) with nu + nu_T of the particle
     return &run_wall_flux<D, Kernel, wall::PressureFlux, wall::Continuity, wall::EddyNoSlipViscosity<D>>;
   if (uses_consistent_laplacian(s))
     return &run_wall_flux<D, Kernel, wall::PressureFlux, wall::Continuity, wall::NoSlipViscosity<D, true>>;

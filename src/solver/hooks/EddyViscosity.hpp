@@ -8,7 +8,9 @@
 // term reads on both sides. With k-epsilon, k and epsilon are particle fields (in checkpoints),
 // set to the case's initial values at the start and advanced at each step's end over the step
 // (kernels/turbulence/KEpsilon.hpp: from the end state, the destruction and the diffusion's
-// diagonal implicit), split from the Runge-Kutta step of the flow.
+// diagonal implicit), split from the Runge-Kutta step of the flow. The Langevin model moves the
+// owned particles' velocities at each step's end by its increment over the step
+// (kernels/turbulence/Langevin.hpp), split likewise; <u>, nu_T, k and epsilon are its by-products.
 #include "kernels/turbulence/KEpsilon.hpp"
 #include "solver/StepState.hpp"
 #include "solver/StepHook.hpp"
@@ -18,12 +20,20 @@ namespace ondine {
 template <int D>
 class EddyViscosity final : public StepHook<D> {
  public:
-  explicit EddyViscosity(const Scene& s) : k_eps_(s.turbulence.model == TurbulenceModel::KEpsilon) {}
+  explicit EddyViscosity(const Scene& s)
+      : k_eps_(s.turbulence.model == TurbulenceModel::KEpsilon), langevin_(s.turbulence.model == TurbulenceModel::Langevin) {}
   const char* name() const override { return "eddy_viscosity"; }
   void allocate(ParticleSet<D>& p) override {
     p.allocate(field::EddyViscosity{});
     p.allocate(field::FrictionVelocity{});
     p.allocate(field::YPlus{});
+    if (langevin_) {
+      p.allocate(field::TurbulentKineticEnergy{});
+      p.allocate(field::DissipationRate{});
+      p.allocate(field::MeanVelocity{});
+      p.allocate(field::LangevinVelocity{});
+      p.allocate(field::LangevinOffset{});
+    }
     if (!k_eps_) return;
     p.allocate(field::TurbulentKineticEnergy{});
     p.allocate(field::DissipationRate{});
@@ -43,6 +53,7 @@ class EddyViscosity final : public StepHook<D> {
     s.domain().refresh(s.particles(), field::EddyViscosity{});  // a list rebuilt since may have made new halo copies
   }
   void step_end(StepState<D>& s, double dt) override {
+    if (langevin_) langevin_step(s, dt);
     if (!k_eps_) return;
     ParticleSet<D>& p = s.particles();
     s.ensure_lists();
@@ -66,7 +77,34 @@ class EddyViscosity final : public StepHook<D> {
   }
 
  private:
-  bool k_eps_;
+  void langevin_step(StepState<D>& s, double dt) {
+    ParticleSet<D>& p = s.particles();
+    s.ensure_lists();
+    s.domain().refresh_state_halos(p);
+    for (const LevelSpan<D>& L : s.levels())
+      if (L.active_end > L.first) s.scheme().langevin_mean(s.context(L));
+    s.domain().refresh(p, field::MeanVelocity{});
+    for (const LevelSpan<D>& L : s.levels())
+      if (L.active_end > L.first) {
+        PassContext<D> c = s.context(L);
+        c.langevin.dt = dt;
+        c.langevin.step = s.steps();
+        s.scheme().langevin_step(c);
+      }
+    auto u = p.get(field::Velocity{});
+    auto u1 = p.get(field::LangevinVelocity{});
+    auto mean = p.get(field::MeanVelocity{});
+    auto corrected = p.get(field::LangevinOffset{});
+    Kokkos::parallel_for("ondine::Langevin::update", Kokkos::RangePolicy<ExecSpace>(0, s.owned()), KOKKOS_LAMBDA(const int i) {
+      for (int a = 0; a < D; ++a) {
+        u(i, a) = u1(i, a);
+        mean(i, a) = corrected(i, a);
+      }
+    });
+    s.domain().halos_stale();
+  }
+
+  bool k_eps_, langevin_;
 };
 
 }  // namespace ondine

@@ -1,0 +1,160 @@
+#pragma once
+// The Generalised Langevin Model (V&I §4.1.2, [V&I 16]) on the particles' instantaneous velocity:
+//   du_i = G_ij u'_j dt + sqrt(C0 epsilon dt) xi_i,   u' = u - <u>,
+//   G_ij = -C1/2 (epsilon / k) delta_ij + C2 d<u_i>/dx_j        (C1 = 1.8, C2 = 0.6: LRR-IP),
+// the pressure and body-force parts of [V&I 16] being the flow's own step. The means are
+// kernel-filtered [V&I 17], Shepard-normalised with the particle itself (LangevinMean):
+//   u~_i = sum_j w_j u_j W_ij / sum_j w_j W_ij,   d_i = sum_j w_j (x_j - x_i) W_ij / sum_j w_j W_ij,
+// grad<u>_i the renormalised gradient (2.42)-(2.44) of the means, from u~_j - u~_i as V&I's
+// [V&I 15] takes <u>_ab, and the mean corrected to first order (LangevinStep):
+//   <u>_i = u~_i - grad<u>_i d_i,
+// exact for a linear field on a support cut by a wall, where u~_i is the value at the support's
+// centroid d_i: the drift G u' would otherwise pull the first rows towards the faster fluid
+// above them, a momentum source (measured in the plane channel at h/20: +8 N/m on the first
+// rows against the driving 20 N/m). The strain of the means, not of the instantaneous
+// velocities: epsilon grows as s^3 and the increment's noise as sqrt(epsilon), so a strain read
+// from the fluctuations themselves feeds them back (measured: epsilon 1e7 times the log law's
+// at mid-channel within 4 s, then a blow-up);
+//   epsilon_i = 2 nu_T,i S:S = nu_T,i s^2 (nu_T of the mixing length, V&I §4.1.1),
+//   k_i = sqrt(epsilon_i nu_T,i / C_mu)    (the seed's relation read as nu_T = C_mu k^2 / epsilon:
+//                                           printed k = epsilon nu_T / C_mu is m^4/s^4),
+// so epsilon / k = sqrt(C_mu) s, finite where s -> 0. C0 follows from C1, C2 (Pope 2000 §12.6):
+// the trace of the model's Reynolds-stress equation over the d velocity components carried,
+//   dk/dt = P + G_ij R_ij + (d/2) C0 epsilon = P - epsilon,
+// gives C0 = (2/d) (C1 - 1 + C2 P / epsilon), and epsilon is the mixing length's production
+// (P / epsilon = 1): C0 = (2/d) (C1 - 1 + C2) (0.933 in 3D, 1.4 in 2D).
+// LangevinStep advances u' over the step dt from the step's end state, the isotropic relaxation
+// implicit (stable for any step), into a scratch field:
+//   u'_1 = (u' + dt C2 grad<u> u' + sqrt(C0 epsilon dt) xi) / (1 + dt C1 epsilon / (2 k)),
+//   u_1 = <u> + u'_1;
+// xi_i: independent standard normal numbers, a function of (seed, particle id, step, component)
+// (a counter-based stream: the same on any rank count, after a restart, on any backend).
+#include <cstdint>
+
+#include "kernels/Fields.hpp"
+#include "kernels/NeighbourLoops.hpp"
+#include "kernels/VelocityGradientSum.hpp"
+#include "kernels/turbulence/EddyViscosityPass.hpp"
+
+namespace ondine {
+
+struct LangevinConstants {
+  double c1 = 1.8, c2 = 0.6, c0 = 1.4, c_mu = 0.09;
+  std::uint64_t seed = 0;
+  std::int64_t step = 0;  // the step advanced (set by the hook)
+  double dt = 0;
+
+  // C0 of Pope's consistency relation with P / epsilon = 1, in d dimensions
+  static double consistent_c0(double c1, double c2, int d) { return 2.0 / d * (c1 - 1.0 + c2); }
+};
+
+// SplitMix64's finaliser (Steele, Lea & Flood 2014): a bijective 64-bit mix
+KOKKOS_INLINE_FUNCTION std::uint64_t splitmix64(std::uint64_t z) {
+  z += 0x9E3779B97F4A7C15ull;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+// the standard normal xi_c (c = 0 .. 3) of particle `id` at step `step`: a Box-Muller pair from
+// two uniforms in (0, 1] of the counter (seed, id, step, pair)
+KOKKOS_INLINE_FUNCTION double langevin_normal(const std::uint64_t seed, const std::int64_t id, const std::int64_t step, const int c) {
+  const std::uint64_t key = splitmix64(splitmix64(splitmix64(seed) ^ static_cast<std::uint64_t>(id)) ^ static_cast<std::uint64_t>(step));
+  const std::uint64_t a = splitmix64(key ^ (2ull * static_cast<std::uint64_t>(c / 2) + 1ull));
+  const std::uint64_t b = splitmix64(a);
+  const double u1 = (static_cast<double>(a >> 11) + 1.0) * 0x1.0p-53;  // (0, 1]
+  const double u2 = static_cast<double>(b >> 11) * 0x1.0p-53;          // [0, 1)
+  const double rad = kmath::sqrt(-2.0 * kmath::log(u1)), ang = 6.283185307179586 * u2;
+  return (c % 2 == 0) ? rad * kmath::cos(ang) : rad * kmath::sin(ang);
+}
+
+// u'_1 of one particle: its fluctuation u', grad<u>, epsilon / k, epsilon and the normals xi
+template <int D>
+KOKKOS_INLINE_FUNCTION Vec<D> langevin_fluctuation(const Vec<D>& up, const Mat<D>& g, const double eps_over_k, const double eps,
+                                                   const Vec<D>& xi, const LangevinConstants& c) {
+  const double noise = kmath::sqrt(c.c0 * eps * c.dt), relax = 1.0 / (1.0 + c.dt * 0.5 * c.c1 * eps_over_k);
+  Vec<D> out;
+  for (int a = 0; a < D; ++a) {
+    double gu = 0;
+    for (int b = 0; b < D; ++b) gu += g.a[a][b] * up[b];
+    out[a] = (up[a] + c.dt * c.c2 * gu + noise * xi[a]) * relax;
+  }
+  return out;
+}
+
+template <int D, class Kernel>
+struct LangevinMean {
+  NeighbourList<D> list;
+  PeriodicBox<D> box;
+  Kernel W;
+  double R2;
+  field_view_t<field::Position, D> x;
+  field_view_t<field::Velocity, D> u;
+  field_view_t<field::Density, D> rho;
+  field_view_t<field::Mass, D> m;
+  field_view_t<field::MeanVelocity, D> mean;        // u~
+  field_view_t<field::LangevinOffset, D> offset;    // d
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    const Vec<D> xi = load<D>(x, i);
+    const double wi = m(i) / rho(i) * W.value(0.0);
+    Vec<D> sum = wi * load<D>(u, i), centroid = Vec<D>::zero();
+    double shepard = wi;
+    for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>& xij, const double r) {
+      const double wW = m(j) / rho(j) * W.value(r);
+      sum = sum + wW * load<D>(u, j);
+      centroid = centroid + (-wW) * xij;
+      shepard += wW;
+    });
+    for (int a = 0; a < D; ++a) {
+      mean(i, a) = sum[a] / shepard;
+      offset(i, a) = centroid[a] / shepard;
+    }
+  }
+};
+
+template <int D, class Kernel>
+struct LangevinStep {
+  NeighbourList<D> list;
+  PeriodicBox<D> box;
+  Kernel W;
+  double R2;
+  field_view_t<field::Position, D> x;
+  field_view_t<field::Velocity, D> u;
+  field_view_t<field::Density, D> rho;
+  field_view_t<field::Mass, D> m;
+  field_view_t<field::GlobalId, D> id;
+  MixingLength<D> length;
+  LangevinConstants c;
+  field_view_t<field::MeanVelocity, D> mean;        // u~ of every particle, halo copies included
+  field_view_t<field::LangevinOffset, D> offset;    // d_i, overwritten by <u>_i
+  // written: nu_T, k and epsilon of the end state, the velocity after the increment
+  field_view_t<field::EddyViscosity, D> nu_T;
+  field_view_t<field::TurbulentKineticEnergy, D> k;
+  field_view_t<field::DissipationRate, D> eps;
+  field_view_t<field::LangevinVelocity, D> u_next;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    const Vec<D> xi = load<D>(x, i), ui = load<D>(u, i), ut = load<D>(mean, i);
+    VelocityGradientSum<D> S;
+    for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>& xij, const double r) {
+      S.add(m(j) / rho(j), xij, (W.derivative(r) / r) * xij, load<D>(mean, j) - ut);
+    });
+    const Mat<D> g = S.gradient();
+    const Vec<D> um = ut + (-1.0) * (g * load<D>(offset, i));
+    const double s = strain_rate_magnitude<D>(g), L = length(xi);
+    const double nt = L * L * s, e = nt * s * s;  // nu_T (V&I §4.1.1), epsilon = nu_T s^2
+    Vec<D> noise;
+    for (int a = 0; a < D; ++a) noise[a] = langevin_normal(c.seed, id(i), c.step, a);
+    const Vec<D> up = langevin_fluctuation<D>(ui - um, g, kmath::sqrt(c.c_mu) * s, e, noise, c);
+    nu_T(i) = nt;
+    eps(i) = e;
+    k(i) = kmath::sqrt(e * nt / c.c_mu);
+    for (int a = 0; a < D; ++a) {
+      u_next(i, a) = um[a] + up[a];
+      offset(i, a) = um[a];
+    }
+  }
+};
+
+}  // namespace ondine

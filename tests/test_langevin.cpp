@@ -1,0 +1,196 @@
+// The Generalised Langevin Model (V&I §4.1.2; kernels/turbulence/Langevin.hpp): its random stream,
+// the consistency of C0 with the energy budget, its pass on a sheared block, and the case file.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include "kernels/turbulence/Langevin.hpp"
+#include "test_helpers.hpp"
+
+using namespace ondine;
+using namespace ondine::test;
+using Catch::Matchers::Contains;
+
+TEST_CASE("Langevin: the random stream is standard normal, uncorrelated across components, particles and steps", "[unit][turbulence]") {
+  const int N = 200000;
+  double s1 = 0, s2 = 0, s4 = 0, c01 = 0, cstep = 0, cid = 0;
+  for (int n = 0; n < N; ++n) {
+    const std::int64_t id = n % 1000, step = n / 1000;
+    const double a = langevin_normal(7, id, step, 0), b = langevin_normal(7, id, step, 1);
+    const double c = langevin_normal(7, id, step, 2), later = langevin_normal(7, id, step + 1, 0);
+    const double other = langevin_normal(7, id + 1000, step, 0);
+    s1 += a + c, s2 += a * a + c * c, s4 += a * a * a * a + c * c * c * c;
+    c01 += a * b, cstep += a * later, cid += a * other;
+  }
+  const double M = 2.0 * N;
+  // 4 standard deviations of each estimate: mean 1/sqrt(M), variance sqrt(2/M), 4th moment sqrt(96/M)
+  CHECK(std::abs(s1 / M) < 4 / std::sqrt(M));
+  CHECK(std::abs(s2 / M - 1) < 4 * std::sqrt(2 / M));
+  CHECK(std::abs(s4 / M - 3) < 4 * std::sqrt(96 / M));
+  CHECK(std::abs(c01 / N) < 4 / std::sqrt(N * 1.0));
+  CHECK(std::abs(cstep / N) < 4 / std::sqrt(N * 1.0));
+  CHECK(std::abs(cid / N) < 4 / std::sqrt(N * 1.0));
+  // a function of (seed, id, step, component) alone
+  CHECK(langevin_normal(7, 12, 34, 1) == langevin_normal(7, 12, 34, 1));
+  CHECK(langevin_normal(7, 12, 34, 1) != langevin_normal(8, 12, 34, 1));
+}
+
+// the expected change of k = |u'|^2 / 2 over one update for fluctuations of covariance R = L L^T
+// (L lower triangular), the normals averaged analytically: sum_k |f(L e_k, 0)|^2 + sum_a |f(0, e_a)|^2
+template <int D>
+double energy_change(const Mat<D>& L, const Mat<D>& g, double eps_over_k, double eps, const LangevinConstants& c) {
+  double after = 0, before = 0;
+  for (int k = 0; k < D; ++k) {
+    Vec<D> up = Vec<D>::zero(), e = Vec<D>::zero();
+    for (int a = 0; a < D; ++a) up[a] = L.a[a][k];
+    const Vec<D> f = langevin_fluctuation<D>(up, g, eps_over_k, eps, Vec<D>::zero(), c);
+    e[k] = 1.0;
+    const Vec<D> n = langevin_fluctuation<D>(Vec<D>::zero(), g, eps_over_k, eps, e, c);
+    after += norm2(f) + norm2(n), before += norm2(up);
+  }
+  return 0.5 * (after - before);
+}
+
+template <int D>
+void check_energy_budget() {
+  // a shear dU_0/dx_1 = S with R_01 < 0: P = -R_01 S; epsilon = P (the mixing length's equilibrium)
+  const double S = 2.0;
+  Mat<D> R = Mat<D>::zero(), g = Mat<D>::zero();
+  for (int a = 0; a < D; ++a) R.a[a][a] = a == 0 ? 0.5 : a == 1 ? 0.2 : 0.3;
+  R.a[0][1] = R.a[1][0] = -0.12;
+  g.a[0][1] = S;
+  double trace = 0;
+  for (int a = 0; a < D; ++a) trace += R.a[a][a];
+  const double k = 0.5 * trace, P = 0.12 * S, eps = P;
+  Mat<D> L = Mat<D>::zero();  // Cholesky
+  for (int i = 0; i < D; ++i)
+    for (int j = 0; j <= i; ++j) {
+      double s = R.a[i][j];
+      for (int m = 0; m < j; ++m) s -= L.a[i][m] * L.a[j][m];
+      L.a[i][j] = i == j ? std::sqrt(s) : s / L.a[j][j];
+    }
+  LangevinConstants c;
+  c.c0 = LangevinConstants::consistent_c0(c.c1, c.c2, D);
+  c.dt = 1e-5;
+  // the update's drift and diffusion remove epsilon dt from k; the flow's motion through the mean
+  // gradient supplies P = epsilon: dk/dt = P - epsilon (Pope 2000 §12.6, trace over d components)
+  const double dk = energy_change<D>(L, g, eps / k, eps, c);
+  INFO("d = " << D << ", C0 = " << c.c0 << ", dk / (epsilon dt) = " << dk / (eps * c.dt));
+  CHECK(std::abs(dk / (-eps * c.dt) - 1.0) < 1e-3);  // O(dt) of the implicit relaxation
+  // another C0 breaks the budget
+  c.c0 *= 1.2;
+  CHECK(std::abs(energy_change<D>(L, g, eps / k, eps, c) / (-eps * c.dt) - 1.0) > 0.1);
+}
+
+TEST_CASE("Langevin: C0 of Pope's relation closes the energy budget dk/dt = P - epsilon in 2D and 3D", "[unit][turbulence]") {
+  CHECK(LangevinConstants::consistent_c0(1.8, 0.6, 3) == Approx(2.8 / 3.0));
+  CHECK(LangevinConstants::consistent_c0(1.8, 0.6, 2) == Approx(1.4));
+  check_energy_budget<2>();
+  check_energy_budget<3>();
+}
+
+namespace {
+
+// a free block 1 x 0.5 m on a regular lattice in simple shear u = (a y, 0), one step of the
+// Langevin model with a constant mixing length L
+struct ShearStep {
+  double dt = 0;
+  Kokkos::View<double* [2], Kokkos::LayoutLeft, Kokkos::HostSpace> x, u, mean;
+  Kokkos::View<double*, Kokkos::HostSpace> k, eps, nu_T;
+};
+
+ShearStep shear_step(double a, double L) {
+  const std::string y = R"(dimension: 2
+domain: {min: [-0.2, -0.2], max: [1.2, 0.7]}
+fluid: {rho0: 1000, sound_speed: 10, viscosity: 1.0e-6}
+discretisation: {dx: 0.025}
+fluid_blocks: [{min: [0, 0], max: [1, 0.5]}]
+scheme: {viscous_term: morris}
+time: {duration: 1, output_interval: 1}
+turbulence: {model: langevin, mixing_length: {length: )" + std::to_string(L) + "}, langevin: {seed: 3}}\n";
+  Simulation<2> sim(parse_case(y, "langevin.yaml"));
+  auto& p = sim.particles();
+  const auto x = p.get(field::Position{});
+  const auto u = p.get(field::Velocity{});
+  Kokkos::parallel_for(static_cast<int>(p.size()), KOKKOS_LAMBDA(int i) {
+    u(i, 0) = a * x(i, 1);
+    u(i, 1) = 0.0;
+  });
+  ShearStep s;
+  s.dt = sim.step(1.0);  // the step may reorder the particles: the views are taken again
+  s.x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Position{}));
+  s.u = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Velocity{}));
+  s.mean = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::MeanVelocity{}));
+  s.k = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::TurbulentKineticEnergy{}));
+  s.eps = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::DissipationRate{}));
+  s.nu_T = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::EddyViscosity{}));
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("Langevin: on a sheared block nu_T, epsilon, k and <u> of the linear field, then the increment's noise", "[turbulence]") {
+  const double a = 3.0, L = 0.05, c_mu = 0.09, c0 = 1.4, c1 = 1.8;
+  const ShearStep s = shear_step(a, L);
+  // expected: nu_T = L^2 a, epsilon = nu_T a^2, k = sqrt(epsilon nu_T / C_mu) = L^2 a^2 / sqrt(C_mu)
+  const double nt = L * L * a, e = nt * a * a, k = std::sqrt(e * nt / c_mu);
+  const double R = 0.125;  // 5 dx from the edges: beyond a support and the one-step reach of their pressure waves
+  double worst_model = 0, worst_mean = 0, var = 0;
+  int n = 0;
+  const double amp = std::sqrt(c0 * e * s.dt) / (1.0 + s.dt * 0.5 * c1 * std::sqrt(c_mu) * a);
+  for (std::size_t i = 0; i < s.k.extent(0); ++i) {
+    // the step moved the particles by a y dt along x: compare in the block's interior
+    if (s.x(i, 0) < R + 0.01 || s.x(i, 0) > 1 - R - 0.01 || s.x(i, 1) < R || s.x(i, 1) > 0.5 - R) continue;
+    worst_model = std::max({worst_model, std::abs(s.nu_T(i) / nt - 1), std::abs(s.eps(i) / e - 1), std::abs(s.k(i) / k - 1)});
+    worst_mean = std::max(worst_mean, std::abs(s.mean(i, 0) - a * s.x(i, 1)) / (a * 0.5));
+    for (int c = 0; c < 2; ++c) {
+      const double d = (s.u(i, c) - s.mean(i, c)) / amp;  // u' = 0 before the increment: its noise alone
+      var += d * d;
+      ++n;
+    }
+  }
+  INFO("dt " << s.dt << ", interior samples " << n << ", worst nu_T/epsilon/k " << worst_model << ", worst <u> " << worst_mean
+             << ", normalised variance " << var / n);
+  REQUIRE(n > 300);
+  // the step's flux leaves the interior's shear linear to about 2e-6 (measured: 6.9e-6 on epsilon, ~ s^3)
+  CHECK(worst_model < 1e-4);
+  CHECK(worst_mean < 1e-6);
+  CHECK(std::abs(var / n - 1.0) < 4 * std::sqrt(2.0 / n));
+}
+
+TEST_CASE("Langevin: the case file refuses what is not built, naming the key", "[unit][turbulence][case]") {
+  const auto with = [](const std::string& turbulence, const std::string& reference = "") {
+    return R"(dimension: 2
+domain: {min: [0, -0.1], max: [1, 1.1], periodic: [true, false]}
+fluid: {rho0: 1000, sound_speed: 10, viscosity: 1.0e-5}
+discretisation: {dx: 0.05}
+walls:
+- {name: bottom, points: [[0, 0], [1, 0]], fluid_side: left, condition: no_slip}
+fluid_blocks: [{min: [0, 0], max: [1, 1]}]
+forces: {body_force: [0.01, 0]}
+scheme: {viscous_term: morris}
+time: {duration: 1, output_interval: 1}
+turbulence: )" + turbulence + "\n" + reference;
+  };
+  CHECK_THROWS_WITH(parse_case(with("{model: langevin}"), "l.yaml"), Contains("turbulence.mixing_length"));
+  CHECK_THROWS_WITH(parse_case(with("{model: mixing_length, mixing_length: {length: 0.1}, langevin: {c1: 1.8}}"), "l.yaml"),
+                    Contains("turbulence.langevin"));
+  CHECK_THROWS_WITH(parse_case(with("{model: langevin, mixing_length: {axis: 1, bed: 0, depth: 1, half_width: 0.5}}"), "l.yaml"),
+                    Contains("turbulence.mixing_length.half_width"));
+  CHECK_THROWS_WITH(parse_case(with("{model: langevin, mixing_length: {length: 0.1}, langevin: {c1: 0.2, c2: 0.1}}"), "l.yaml"),
+                    Contains("turbulence.langevin"));
+  CHECK_THROWS_WITH(parse_case(with("{model: langevin, mixing_length: {length: 0.1}, langevin: {seed: -1}}"), "l.yaml"),
+                    Contains("turbulence.langevin.seed"));
+  CHECK_THROWS_WITH(
+      parse_case(with("{model: langevin, mixing_length: {length: 0.1}}", "reference: {type: hydrostatic, length: 1, plane: true}\n"), "l.yaml"),
+      Contains("reference.plane"));
+  const Scene s = parse_case(with("{model: langevin, mixing_length: {axis: 1, bed: 0, half_width: 0.5}, wall_function: smooth}",
+                                  "reference: {type: log_law, length: 0.5, plane: true}\n"),
+                             "l.yaml");
+  CHECK(s.turbulence.plane);
+  CHECK(s.turbulence.depth == 0.5);
+  CHECK(s.turbulence.langevin_c0 == Approx(1.4));
+  CHECK(s.reference.plane);
+  CHECK(!s.turbulence.eddy_viscous());
+}
