@@ -13,6 +13,7 @@
 #   unit      the unit tests (ondine_tests "[unit]")
 #   pairbench the hand-written OpenMP pair loop on the machine's cores (the yardstick)
 #   validate:NAME  `ondine validate --case NAME --level full` (limit 150 s)
+#   case:NAME,FILE,ARG,...  `ondine run FILE` with these arguments (commas for spaces) (limit 150 s)
 #   run:NAME,ARG,...  SPHERIC Test 2 with these `ondine run` arguments (commas for spaces),
 #             e.g. run:dx015,--set,discretisation.dx=0.015 (limit 150 s)
 # OUT_DIR gets log.txt, steps.json (each step's status and seconds) and results.tar.gz
@@ -86,6 +87,9 @@ for s in "${steps[@]}"; do
       fi ;;
     validate:*)
       step "${s#validate:}" 150 "$bin/ondine" validate --case "${s#validate:}" --level full --out "$work/runs/${s#validate:}" ;;
+    case:*)
+      IFS=, read -r -a args <<< "${s#case:}"
+      step "${args[0]}" 150 "$bin/ondine" run "${args[1]}" --quiet --out "$work/runs/${args[0]}" "${args[@]:2}" ;;
     run:*)
       IFS=, read -r -a args <<< "${s#run:}"
       step "${args[0]}" 150 "$bin/ondine" run cases/spheric_test2_3d.yaml --quiet --out "$work/runs/${args[0]}" "${args[@]:1}" ;;
