@@ -76,7 +76,7 @@ class EddyViscosity final : public StepHook<D> {
     Kokkos::parallel_for("ondine::KEpsilon::update", Kokkos::RangePolicy<ExecSpace>(0, s.owned()), update);
   }
 
- private:
+  // public: nvcc takes no extended lambda in a private member function
   void langevin_step(StepState<D>& s, double dt) {
     ParticleSet<D>& p = s.particles();
     s.ensure_lists();
@@ -104,6 +104,7 @@ class EddyViscosity final : public StepHook<D> {
     s.domain().halos_stale();
   }
 
+ private:
   bool k_eps_, langevin_;
 };
 
