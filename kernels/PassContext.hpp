@@ -34,7 +34,7 @@ struct PassContext {
   field_view_t<field::Pressure, D> P;
   field_view_t<field::Mass, D> m;
   field_view_t<field::DensityGradient, D> grad_rho;
-  VelocityGradientRows<D> grad_u;  // Riemann-SPH with MUSCL: written by the density-gradient pass
+  VelocityGradientRows<D> grad_u;  // Riemann-SPH with MUSCL, the wall's velocity MUSCL state: written by the density-gradient pass
   field_view_t<field::ShepardGamma, D> gamma;
   field_view_t<field::Acceleration, D> du;
   field_view_t<field::DensityRate, D> drho;

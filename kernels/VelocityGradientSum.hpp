@@ -28,6 +28,15 @@ struct VelocityGradientRows {
   }
 };
 
+// <grad u>_i read back from the rows
+template <int D>
+KOKKOS_INLINE_FUNCTION Mat<D> velocity_gradient_of(const VelocityGradientRows<D>& rows, const int i) {
+  Mat<D> g;
+  for (int a = 0; a < D; ++a)
+    for (int b = 0; b < D; ++b) g.a[a][b] = rows(i, a, b);
+  return g;
+}
+
 template <int D>
 struct VelocityGradientSum {
   Mat<D> M = Mat<D>::zero();  // sum_j w_j (x_j - x_i) (x) grad_i W_ij

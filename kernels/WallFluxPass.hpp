@@ -11,8 +11,9 @@
 // (wall::PressureFlux, wall::Continuity, wall::NoSlipViscosity),
 // with the wall pressure P_p of the normal flux (4.14) and its MUSCL state of rho
 // (4.30)-(4.32, kernels/WallPressure.hpp); with scheme.wall_velocity_reconstruction also of u
-// (kernels/WallVelocityState.hpp): the velocity gradient is gathered, for the particles
-// that have a wall point within R only, by one more loop over the neighbour list.
+// (kernels/WallVelocityState.hpp), from the renormalised velocity gradient the density-gradient
+// pass gathers in its own neighbour loop (held through the step with scheme.density_gradient: step,
+// as the density's).
 // With Morris viscosity and no-slip walls (Consistent), the wall term carries the
 // weight s_i(x_iq) of the Laplacian exact for linear and quadratic fields
 // (kernels/ConsistentLaplacian.hpp), as the fluid pairs do.
@@ -59,16 +60,17 @@ struct WallFluxPass {
   field_view_t<field::ShepardGamma, D> gamma;
   field_view_t<field::Acceleration, D> du;
   field_view_t<field::DensityRate, D> drho;
-  NeighbourList<D> list;           // the flux pass's list (grad u of the MUSCL state; the wall-ward correction's sum_P)
+  NeighbourList<D> list;           // the flux pass's list (the wall-ward correction's sum_P)
   field_view_t<field::Mass, D> m;
   double clearance;                // dx / 2 of the level: the wall-ward correction acts closer than this
   bool velocity_muscl = false;     // scheme.wall_velocity_reconstruction: the MUSCL state of u (4.30)
+  VelocityGradientRows<D> grad_u;  // <grad u>_i of that state (velocity_muscl only)
   Pack terms;
 
   WallFluxPass(const PassContext<D>& c, const Pack& pack)
       : wall(c.wall), wall_cells(c.wall_cells), W(c.R), R2(c.R * c.R), body(c.body), eos(c.eos), box(c.box), P_min(c.P_min),
         x(c.x), u(c.u), rho(c.rho), P(c.P), grad_rho(c.grad_rho), gamma(c.gamma), du(c.du), drho(c.drho), list(c.list), m(c.m),
-        clearance(c.clearance), velocity_muscl(c.velocity_muscl), terms(pack) {}
+        clearance(c.clearance), velocity_muscl(c.velocity_muscl), grad_u(c.grad_u), terms(pack) {}
 
   // E_i's fluid part sum_P w_j grad_i W_ij (only for particles next to a wall).
   KOKKOS_INLINE_FUNCTION Vec<D> fluid_gradient_sum(const int i, const Vec<D>& xi) const {
@@ -79,18 +81,9 @@ struct WallFluxPass {
     return S;
   }
 
-  // <grad u>_i of the velocity's MUSCL state (4.30)
-  KOKKOS_INLINE_FUNCTION Mat<D> velocity_gradient(const int i, const Vec<D>& xi, const Vec<D>& ui) const {
-    VelocityGradientSum<D> S;
-    for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>& xij, const double r) {
-      S.add(m(j) / rho(j), xij, (W.derivative(r) / r) * xij, load<D>(u, j) - ui);
-    });
-    return S.gradient();
-  }
-
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<D> xi = load<D>(x, i), ui = load<D>(u, i);
-    Mat<D> grad_u;
+    Mat<D> grad_u_i;
     bool have_grad_u = false;
     const double rho_i = rho(i), P_i = P(i);
     const double c2 = eos.c2(rho_i);
@@ -107,10 +100,10 @@ struct WallFluxPass {
       double un = dot(ui - uq, n);
       if (velocity_muscl) {
         if (!have_grad_u) {
-          grad_u = velocity_gradient(i, xi, ui);
+          grad_u_i = velocity_gradient_of<D>(grad_u, i);
           have_grad_u = true;
         }
-        un = wall_normal_velocity<D>(grad_u, xiq, ui, uq, n);
+        un = wall_normal_velocity<D>(grad_u_i, xiq, ui, uq, n);
       }
       terms.point(p, WallPoint<D>{q, xiq, Wq, n, uq, un}, s);
     });

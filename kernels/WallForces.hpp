@@ -1,8 +1,8 @@
 #pragma once
 // Force of the fluid on the walls: the wall pressure of the normal flux (4.14),
 // with the MUSCL state and limiters of (4.30)-(4.32) (with scheme.wall_velocity_reconstruction
-// the velocity's as in the wall flux, kernels/WallVelocityState.hpp, its gradient gathered
-// from the particle cell list, same level only with refinement zones), and the viscous traction of
+// the velocity's as in the wall flux, kernels/WallVelocityState.hpp, from the velocity gradient
+// the density-gradient pass stored), and the viscous traction of
 // the NFM Laplacian's wall term (4.85), each Shepard-interpolated (2.40-2.41) at
 // every wall quadrature point q from the particles around it, then integrated:
 //   F_w = sum_{q in w} s_q [ <P_p>_q n_out + rho0 nu <(u_i - u_q) / |d_n|>_q ].
@@ -45,27 +45,7 @@ struct WallTraction {
   bool velocity_muscl = false;  // scheme.wall_velocity_reconstruction
   Kokkos::View<double*, MemSpace> c2;  // c_i^2 = eos.c2(rho_i) of each particle (ParticleSoundSpeed2), once per call
   bool state_only = false;  // the MUSCL state's pressure P_f alone, without (4.14)'s rho c u_n (wall sensors)
-
-  // <grad u>_i of the velocity's MUSCL state (4.30), over the particles within R_i of i
-  // (same birth level, SPH or guard, with refinement zones: i's own L. list)
-  KOKKOS_INLINE_FUNCTION Mat<D> velocity_gradient(const int i, const Vec<D>& xi, const Vec<D>& ui) const {
-    VelocityGradientSum<D> S;
-    double R2_i = R2, R_i = 1.0;
-    if constexpr (Levels) {
-      R_i = zones.R[birth(i)];
-      R2_i = R_i * R_i;
-    }
-    for_each_point_within<D>(cells, box, x, xi, R2_i, [&](const int j, const Vec<D>& xij, const double r) {
-      if (j == i || r <= 0.0) return;
-      if constexpr (Levels) {
-        if (birth(j) != birth(i)) return;
-      }
-      // Levels: W is the kernel at R = 1; the scale of grad W cancels in the renormalisation
-      const double dW = W.derivative(r / R_i);
-      S.add(m(j) / rho(j), xij, (dW / r) * xij, load<D>(u, j) - ui);
-    });
-    return S.gradient();
-  }
+  VelocityGradientRows<D> grad_u = {};  // <grad u>_i of the velocity's MUSCL state (velocity_muscl only)
 
   KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
     const Vec<D> xq = load<D>(wall.x, q), n = load<D>(wall.n_out, q), uq = load<D>(wall.u, q);
@@ -86,7 +66,7 @@ struct WallTraction {
       const double c2_i = c2(i);
       const Vec<D> ui = load<D>(u, i);
       const double un = state_only       ? 0.0
-                        : velocity_muscl ? wall_normal_velocity<D>(velocity_gradient(i, load<D>(x, i), ui), xiq, ui, uq, n)
+                        : velocity_muscl ? wall_normal_velocity<D>(velocity_gradient_of<D>(grad_u, i), xiq, ui, uq, n)
                                          : dot(ui - uq, n);
       sp += w * normal_flux_pressure<D>(rho_i, P(i), c2_i, kmath::sqrt(c2_i), load<D>(grad_rho, i), xiq, un);
       sv += (-w / fluid_side_dn<D>(xiq, n, dn_min)) * (ui - uq);

@@ -3,11 +3,14 @@
 // support, and limited between the wall's and the particle's normal velocity.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "kernels/SmoothingKernels.hpp"
 #include "kernels/WallVelocityState.hpp"
+#include "scene/CaseFile.hpp"
+#include "solver/Simulation.hpp"
 
 using namespace ondine;
 
@@ -69,4 +72,52 @@ TEST_CASE("Wall velocity state: the limiter keeps the state between the wall's a
   const Vec<2> uq_moving{{0.0, -1.0}};
   G.a[1][1] = -0.25;
   CHECK(wall_normal_velocity<2>(G, xiq, towards, uq_moving, n) == 0.0);
+}
+
+TEST_CASE("Wall velocity state: the density-gradient pass gathers the velocity gradient, exact for a linear flow next to 3D walls", "[unit][nfm]") {
+  // the gradient that (4.30) reads comes from the density-gradient pass's own neighbour loop
+  // (src/scene/Scene.hpp, uses_velocity_gradient); the tank's floor and walls cut the supports
+  const std::string y = R"(dimension: 3
+domain: {min: [-0.1, -0.1, -0.1], max: [0.7, 0.7, 0.7]}
+fluid: {rho0: 1000, sound_speed: 10}
+discretisation: {dx: 0.05, R_over_dx: 2.5}
+walls: [{name: tank, box: {min: [0, 0, 0], max: [0.6, 0.6, 0.6]}, fluid_side: inside, condition: slip}]
+fluid_blocks: [{min: [0, 0, 0], max: [0.6, 0.6, 0.4]}]
+scheme: {delta_sph: 0.1, density_gradient: step, wall_velocity_reconstruction: true}
+time: {duration: 1, output_interval: 1})";
+  Simulation<3> sim(parse_case(y, "t.yaml"));
+  auto& p = sim.particles();
+  REQUIRE(p.has(field::VelocityGradientX{}));
+  const auto x = p.get(field::Position{});
+  const auto u = p.get(field::Velocity{});
+  const double a = 0.3;  // the stagnation flow u = (a x, a y, -2 a z): divergence-free, u.n = 0 on the floor
+  Kokkos::parallel_for(static_cast<int>(p.size()), KOKKOS_LAMBDA(int i) {
+    u(i, 0) = a * x(i, 0);
+    u(i, 1) = a * x(i, 1);
+    u(i, 2) = -2.0 * a * x(i, 2);
+  });
+  sim.evaluate();
+  auto g0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::VelocityGradientX{}));
+  auto g1 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::VelocityGradientY{}));
+  auto g2 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::VelocityGradientZ{}));
+  const double exact[3][3] = {{a, 0, 0}, {0, a, 0}, {0, 0, -2 * a}};
+  double worst = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (int b = 0; b < 3; ++b)
+      worst = std::max({worst, std::abs(g0(i, b) - exact[0][b]), std::abs(g1(i, b) - exact[1][b]), std::abs(g2(i, b) - exact[2][b])});
+  CHECK(p.size() > 1000);
+  CHECK(worst < 1e-9);
+}
+
+TEST_CASE("Wall velocity state: without the option (and without Riemann-SPH) no velocity gradient is gathered", "[unit][nfm]") {
+  const std::string y = R"(dimension: 2
+domain: {min: [-0.1, -0.1], max: [1.1, 1.1]}
+fluid: {rho0: 1000, sound_speed: 10}
+discretisation: {dx: 0.05}
+walls: [{name: tank, points: [[0, 1], [0, 0], [1, 0], [1, 1]], closed: false, fluid_side: left, condition: slip}]
+fluid_blocks: [{min: [0, 0], max: [1, 0.5]}]
+scheme: {delta_sph: 0.1}
+time: {duration: 1, output_interval: 1})";
+  Simulation<2> sim(parse_case(y, "t.yaml"));
+  CHECK_FALSE(sim.particles().has(field::VelocityGradientX{}));
 }

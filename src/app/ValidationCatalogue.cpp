@@ -187,11 +187,13 @@ const std::vector<ValidationCase>& catalogue() {
       // time over the fine run's (goal: a third or less) and its errors are shown, not bounded.
       // All three at the solver's step settings (refinement takes the density gradient at every
       // stage), in place of the uniform case file's fast ones, the sensors at 500 Hz (every step
-      // cut to land on them)
+      // cut to land on them), and the wall's impedance on the first row's velocity (the refined
+      // case file's, without scheme.wall_velocity_reconstruction)
       {"apr_spheric_test2_3d", "cases/spheric_test2_3d.yaml", 0.55,
        {{0.06, false, true, "coarse"}, {0.06, false, true, "apr", "cases/spheric_test2_apr_3d.yaml"}, {0.03, false, true, "fine"}},
        stable({{"wall_crossings", 0.5}}),
-       {"scheme.cfl.acoustic=0.375", "scheme.density_gradient=stage", "time.output_at=exact", "time.output_interval=0.002"}, {},
+       {"scheme.cfl.acoustic=0.375", "scheme.density_gradient=stage", "time.output_at=exact", "time.output_interval=0.002",
+        "scheme.wall_velocity_reconstruction=false"}, {},
        {"H2_rms_error", "H4_rms_error", "P1_peak_relative_error", "P1_peak_time_error", "P3_peak_relative_error", "P3_peak_time_error",
         "wall_time_over_fine", "cpu_time_over_fine", "probe_pressure_difference_vs_fine"},
        {"time.duration=0.6"}},
@@ -239,17 +241,18 @@ const std::vector<ValidationCase>& catalogue() {
       // SPHERIC Test 2 with Smagorinsky's LES closure (C_s = 0.12, the peer's) in place of the
       // artificial viscosity, water's nu = 1e-6 m^2/s, beside the laminar record: the first
       // impact's pressures, their noise (RMS against the measured series) and the heights; the
-      // heights keep the laminar case's bounds
+      // heights keep the laminar case's bounds. Both closures as recorded: the wall's impedance
+      // on the first row's velocity (without scheme.wall_velocity_reconstruction)
       {"turbulent_spheric_test2_3d_les", "cases/spheric_test2_3d.yaml", 0.55, {{0.05, false}, {0.04, true}},
        test2_bounds,
-       {"fluid.viscosity=1e-6", "scheme.viscous_term=morris", "scheme.artificial_viscosity=0", "turbulence.model=smagorinsky"}, {},
+       {"fluid.viscosity=1e-6", "scheme.viscous_term=morris", "scheme.artificial_viscosity=0", "turbulence.model=smagorinsky", "scheme.wall_velocity_reconstruction=false"}, {},
        test2_shown},
       // the same with k-epsilon (GPUSPH reports a quieter pressure signal with it), from a quiet
       // start k0 = 1e-4 m^2/s^2, epsilon0 = 1e-4 m^2/s^3 (nu_T0 = 9e-6 m^2/s)
       {"turbulent_spheric_test2_3d_k_epsilon", "cases/spheric_test2_3d.yaml", 0.55, {{0.05, false}, {0.04, true}},
        test2_bounds,
        {"fluid.viscosity=1e-6", "scheme.viscous_term=morris", "scheme.artificial_viscosity=0", "turbulence.model=k_epsilon",
-        "turbulence.k_epsilon.initial_k=1e-4", "turbulence.k_epsilon.initial_epsilon=1e-4"}, {},
+        "turbulence.k_epsilon.initial_k=1e-4", "turbulence.k_epsilon.initial_epsilon=1e-4", "scheme.wall_velocity_reconstruction=false"}, {},
        test2_shown},
       {"cylinder_re100_2d", "cases/cylinder_re100_2d.yaml", 0.1, {{0.01, false, false}, {0.004, true}},
        stable({{"cd_error", 0.3}, {"cl_amplitude_error", 0.1}, {"strouhal_error", 0.1}, {"open_mass_balance", 1e-12}}),

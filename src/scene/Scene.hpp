@@ -311,8 +311,12 @@ inline bool uses_consistent_laplacian(const Scene& s) {
   return s.viscous_term == ViscousTerm::Morris && s.consistent_laplacian && has_no_slip_wall(s) && !s.turbulence.on();
 }
 
-// Riemann-SPH's MUSCL reconstruction (2.78) reads the renormalised velocity and density gradients.
-inline bool uses_velocity_gradient(const Scene& s) { return s.flux == FluxScheme::Riemann && s.riemann_muscl; }
+// The renormalised velocity gradient is gathered by the density-gradient pass (one neighbour loop
+// for both): Riemann-SPH's MUSCL reconstruction (2.78) reads it, and so does the velocity's MUSCL
+// state at NFM wall points (4.30, scheme.wall_velocity_reconstruction; kernels/WallVelocityState.hpp).
+inline bool uses_velocity_gradient(const Scene& s) {
+  return (s.flux == FluxScheme::Riemann && s.riemann_muscl) || (!s.walls.empty() && s.wall_velocity_reconstruction);
+}
 
 // The renormalised density gradient (2.42-2.44) is computed: delta-SPH (2.63), the MUSCL wall
 // state (4.30), Riemann-SPH's MUSCL reconstruction (2.78).

@@ -202,11 +202,11 @@ void wall_traction(const PassContext<D>& c, const Kokkos::View<double**, Kokkos:
     Kokkos::parallel_for("ondine::NFM::wall_traction", policy,
                          WallTraction<D, K, true>{c.wall, c.cells, K(1.0), c.R * c.R, c.nu, c.rho0, 0.05 * c.R, c.box, c.x, c.u,
                                                   c.rho, c.P, c.m, c.grad_rho, traction, c.zones, c.birth, c.guard, c.velocity_muscl, c2,
-                                                  c.wall_state_only});
+                                                  c.wall_state_only, c.grad_u});
   else
     Kokkos::parallel_for("ondine::NFM::wall_traction", policy,
                          WallTraction<D, K>{c.wall, c.cells, K(c.R), c.R * c.R, c.nu, c.rho0, 0.05 * c.R, c.box, c.x, c.u, c.rho,
-                                            c.P, c.m, c.grad_rho, traction, {}, {}, {}, c.velocity_muscl, c2, c.wall_state_only});
+                                            c.P, c.m, c.grad_rho, traction, {}, {}, {}, c.velocity_muscl, c2, c.wall_state_only, c.grad_u});
 }
 
 // the guard spacing shifts of one level's guards (kernels/apr/GuardSpacing.hpp)
