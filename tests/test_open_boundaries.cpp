@@ -11,6 +11,7 @@
 #include <random>
 #include <set>
 
+#include "observers/ForceCoefficients.hpp"
 #include "reference/ForceCoefficients.hpp"
 #include "scene/CaseError.hpp"
 #include "scene/CaseFile.hpp"
@@ -313,4 +314,36 @@ TEST_CASE("open boundaries: bad input is refused with the key and what was expec
              Contains("the refinement zone 'z'") && Contains("keep the zones clear of the open boundaries"));
   CHECK_THAT(refusal(y, {"fluid_blocks.0.min=[0.0,0.0]"}), Contains("no fluid block covers the buffer layer"));
   CHECK_THAT(refusal(y, {"open_boundaries.0.normal=[1,0,0]"}), Contains("open_boundaries[0].normal"));
+}
+
+TEST_CASE("force coefficients: the drag split into its pressure and viscous parts over the same lift periods", "[open]") {
+  // the cylinder's observer fed walls.csv rows (as at a restart): pressure F_x = q (1.0 + 0.05 sin(4 pi f t)),
+  // viscous F_x = q 0.3, F_y (pressure part) = q 0.3 sin(2 pi f t), q = 1/2 rho U^2 D
+  const Scene scene = load_case(std::string(ONDINE_SOURCE_DIR) + "/cases/cylinder_re100_2d.yaml",
+                                {"discretisation.dx=0.01", "reference.from=2"});
+  Simulation<2> sim(scene);
+  ForceCoefficientObserver<2> observer(scene);
+  const double D = scene.reference.length, U = scene.reference.velocity, q = 0.5 * scene.rho0 * U * U * D, f = 1.68;
+  std::size_t column = 0;  // the cylinder's pressure_fx in walls.csv: time, step, then 2 D + 1 columns per wall
+  for (std::size_t k = 0; k < scene.walls.size(); ++k)
+    if (scene.walls[k].name == scene.reference.wall) column = 2 + k * 5;
+  REQUIRE(column >= 2);
+  ResumedRows rows;
+  for (int s = 0; s <= 4000; ++s) {
+    const double t = s * 0.0025;
+    std::vector<double> row(2 + 5 * scene.walls.size(), 0.0);
+    row[0] = t;
+    row[column] = q * (1.0 + 0.05 * std::sin(4 * M_PI * f * t));  // pressure_fx
+    row[column + 1] = q * 0.3 * std::sin(2 * M_PI * f * t);       // pressure_fy
+    row[column + 2] = q * 0.3;                                    // viscous_fx
+    rows["walls.csv"].push_back(row);
+  }
+  observer.resume(10.0, rows);
+  std::map<std::string, double> errors;
+  RunEnd<2> end{sim};
+  observer.add_figures(errors, end);
+  CHECK(errors.at("cd_mean") == Approx(1.3).epsilon(1e-3));
+  CHECK(errors.at("cd_pressure_mean") == Approx(1.0).epsilon(1e-3));
+  CHECK(errors.at("cd_viscous_mean") == Approx(0.3).epsilon(1e-3));
+  CHECK(errors.at("cd_pressure_mean") + errors.at("cd_viscous_mean") == Approx(errors.at("cd_mean")).epsilon(1e-14));
 }

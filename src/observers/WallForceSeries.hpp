@@ -1,7 +1,7 @@
 #pragma once
 // walls.csv: the force of the fluid on each wall, pressure and viscous parts, and its moment
 // (the reaction of the wall terms 4.22 and 4.85); posts each wall's total force as
-// "NAME.fx", "NAME.fy" for the observers after it.
+// "NAME.fx", "NAME.fy", and its pressure part "NAME.pressure_fx", for the observers after it.
 #include "observers/SeriesObserver.hpp"
 
 namespace ondine {
@@ -25,6 +25,7 @@ class WallForceSeries : public SeriesObserver<D> {
     for (const WallForce& f : wall_forces(now.sim)) {
       now.posted[f.name + ".fx"] = f.pressure[0] + f.viscous[0];
       now.posted[f.name + ".fy"] = f.pressure[1] + f.viscous[1];
+      now.posted[f.name + ".pressure_fx"] = f.pressure[0];
       for (int k = 0; k < D; ++k) row << "," << f.pressure[k];
       for (int k = 0; k < D; ++k) row << "," << f.viscous[k];
       for (int k = D == 2 ? 2 : 0; k < 3; ++k) row << "," << f.moment[k];
