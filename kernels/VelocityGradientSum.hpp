@@ -19,6 +19,12 @@ struct VelocityGradientRows {
   field_view_t<field::VelocityGradientY, D> g1;
   field_view_t<field::VelocityGradientZ, D> g2;  // 3D only
   KOKKOS_INLINE_FUNCTION double operator()(int i, int k, int b) const { return k == 0 ? g0(i, b) : k == 1 ? g1(i, b) : g2(i, b); }
+  KOKKOS_INLINE_FUNCTION Mat<D> load(int i) const {
+    Mat<D> g;
+    for (int a = 0; a < D; ++a)
+      for (int b = 0; b < D; ++b) g.a[a][b] = (*this)(i, a, b);
+    return g;
+  }
   KOKKOS_INLINE_FUNCTION void store(int i, const Mat<D>& g) const {
     for (int b = 0; b < D; ++b) {
       g0(i, b) = g.a[0][b];
@@ -27,15 +33,6 @@ struct VelocityGradientRows {
     }
   }
 };
-
-// <grad u>_i read back from the rows
-template <int D>
-KOKKOS_INLINE_FUNCTION Mat<D> velocity_gradient_of(const VelocityGradientRows<D>& rows, const int i) {
-  Mat<D> g;
-  for (int a = 0; a < D; ++a)
-    for (int b = 0; b < D; ++b) g.a[a][b] = rows(i, a, b);
-  return g;
-}
 
 template <int D>
 struct VelocityGradientSum {

@@ -83,8 +83,7 @@ struct WallFluxPass {
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<D> xi = load<D>(x, i), ui = load<D>(u, i);
-    Mat<D> grad_u_i;
-    bool have_grad_u = false;
+    const Mat<D> grad_u_i = velocity_muscl ? grad_u.load(i) : Mat<D>::zero();
     const double rho_i = rho(i), P_i = P(i);
     const double c2 = eos.c2(rho_i);
     const WallParticle<D> p{i, xi, ui, rho_i, P_i, c2, kmath::sqrt(c2), load<D>(grad_rho, i)};
@@ -98,13 +97,7 @@ struct WallFluxPass {
       if (r < r_min) r_min = r;
       const Vec<D> uq = load<D>(wall.u, q);
       double un = dot(ui - uq, n);
-      if (velocity_muscl) {
-        if (!have_grad_u) {
-          grad_u_i = velocity_gradient_of<D>(grad_u, i);
-          have_grad_u = true;
-        }
-        un = wall_normal_velocity<D>(grad_u_i, xiq, ui, uq, n);
-      }
+      if (velocity_muscl) un = wall_normal_velocity<D>(grad_u_i, xiq, ui, uq, n);
       terms.point(p, WallPoint<D>{q, xiq, Wq, n, uq, un}, s);
     });
     Vec<D>& acc = s.du;

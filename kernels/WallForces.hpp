@@ -66,7 +66,7 @@ struct WallTraction {
       const double c2_i = c2(i);
       const Vec<D> ui = load<D>(u, i);
       const double un = state_only       ? 0.0
-                        : velocity_muscl ? wall_normal_velocity<D>(velocity_gradient_of<D>(grad_u, i), xiq, ui, uq, n)
+                        : velocity_muscl ? wall_normal_velocity<D>(grad_u.load(i), xiq, ui, uq, n)
                                          : dot(ui - uq, n);
       sp += w * normal_flux_pressure<D>(rho_i, P(i), c2_i, kmath::sqrt(c2_i), load<D>(grad_rho, i), xiq, un);
       sv += (-w / fluid_side_dn<D>(xiq, n, dn_min)) * (ui - uq);

@@ -68,8 +68,7 @@ struct KEpsilonStep {
       Be += ge;
     });
     const double s = strain_rate_magnitude<D>(S.gradient());
-    const double P_raw = nu_T(i) * s * s, P_max = c.production_limit * ei, dt = c.dt;
-    const double P = P_raw < P_max ? P_raw : P_max;
+    const double P = kmath::fmin(nu_T(i) * s * s, c.production_limit * ei), dt = c.dt;  // Menter's limiter
     k_next(i) = (ki + dt * (P + Ak)) / (1.0 + dt * (ei / ki + Bk));
     eps_next(i) = (ei + dt * (c.c1 * ei / ki * P + Ae)) / (1.0 + dt * (c.c2 * ei / ki + Be));
   }
