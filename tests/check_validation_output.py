@@ -1,16 +1,20 @@
 #!/usr/bin/env python3
-"""Checks the report of `ondine validate` (usage: check_validation_output.py DIR):
+"""Checks the report of `ondine validate` (usage: check_validation_output.py DIR [REQUIREMENT...]):
 every case has its figure, linked from validation.md; every run has its
 diagnostics; and each profile.csv holds the solution the errors were computed
 from: velocity_l2 (Poiseuille, Couette), pressure_linf (hydrostatic) and
-max_speed_decay_error (Taylor-Green) recomputed from it match validation.json."""
+max_speed_decay_error (Taylor-Green) recomputed from it match validation.json.
+Each REQUIREMENT is one more bound on the report:
+  order:CASE:ERROR:MIN     the observed order of ERROR between CASE's two finest rungs is >= MIN
+  max:CASE:DX:ERROR:MAX    ERROR of CASE's run at DX is < MAX"""
 import csv
 import json
 import os
 import sys
 
 out = sys.argv[1]
-runs = json.load(open(f"{out}/validation.json"))["runs"]
+report = json.load(open(f"{out}/validation.json"))
+runs = report["runs"]
 md = open(f"{out}/validation.md").read()
 failures = []
 
@@ -51,6 +55,20 @@ for r in runs:
         elif "max_speed_exact" in p:
             close(abs(p["max_speed"][-1] - p["max_speed_exact"][-1]) / p["max_speed_exact"][-1], e["max_speed_decay_error"],
                   d + " max_speed_decay_error")
+for req in sys.argv[2:]:
+    kind, *a = req.split(":")
+    if kind == "order":
+        case, error, low = a
+        got = report["orders"].get(case, {}).get(error)
+        check(got is not None and got >= float(low), f"{case} {error} order {got}, asked >= {low}")
+        print(f"check_validation_output.py: {case} {error} order {got} (>= {low})")
+    elif kind == "max":
+        case, dx, error, high = a
+        got = [r["errors"][error] for r in runs if r["case"] == case and abs(r["dx"] - float(dx)) <= 1e-9 * float(dx)]
+        check(len(got) == 1 and got[0] < float(high), f"{case} at dx {dx}: {error} {got}, asked < {high}")
+        print(f"check_validation_output.py: {case} at dx {dx}: {error} {got} (< {high})")
+    else:
+        check(False, f"unknown requirement {req}")
 if failures:
     sys.exit("check_validation_output.py: " + "; ".join(failures))
 print(f"check_validation_output.py: {len(runs)} runs checked")

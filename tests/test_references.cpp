@@ -109,9 +109,32 @@ TEST_CASE("Error norms: the hydrostatic tank at rest is the hydrostatic pressure
   const OutputFrame<2> frame(sim);
   const auto e = reference_errors(sim);
   CHECK(e.at("pressure_linf") < 1e-9);
+  CHECK(e.at("pressure_layer_mean") < 1e-9);
   CHECK(e.at("kinetic_over_potential") == 0.0);
   CHECK(e.at("wall_leaks") == 0.0);
   CHECK(e.at("wall_crossings") == 0.0);
+}
+
+TEST_CASE("Error norms: a layer's mean pressure against the pointwise error", "[unit][reference]") {
+  // every particle of the layer 0.2 <= y < 0.2 + dx alternately +3 % and -1 % of rho g H off the
+  // hydrostatic pressure: pointwise 3 %; that layer's mean off by 1 % (equal counts of each sign)
+  Simulation<2> sim(case_file("hydrostatic_tank_2d.yaml"));
+  const Scene& sc = sim.scene();
+  const double rgh = sc.rho0 * std::abs(sc.gravity[1]) * sc.reference.length;
+  auto& p = sim.particles();
+  auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Position{}));
+  auto hP = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Pressure{}));
+  int in_layer = 0;
+  for (std::size_t i = 0; i < sim.size(); ++i) {
+    const double y = hx(i, 1) - sc.reference.origin[1];
+    hP(i) = sc.rho0 * std::abs(sc.gravity[1]) * (sc.reference.length - y);
+    if (y >= 0.2 && y < 0.2 + sc.dx) hP(i) += (in_layer++ % 2 == 0 ? 0.03 : -0.01) * rgh;
+  }
+  REQUIRE(in_layer % 2 == 0);
+  Kokkos::deep_copy(p.get(field::Pressure{}), hP);
+  const auto e = reference_errors(sim);
+  CHECK(e.at("pressure_linf") == Approx(0.03).epsilon(1e-9));
+  CHECK(e.at("pressure_layer_mean") == Approx(0.01).epsilon(1e-9));
 }
 
 TEST_CASE("Error norms: a channel whose velocity is the start-up profile has no error", "[unit][reference]") {

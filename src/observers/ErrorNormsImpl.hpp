@@ -346,16 +346,32 @@ void hydrostatic(const Simulation<D>& sim, const Diagnostics& d, std::map<std::s
   auto hm = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::Mass{}));
   constexpr int up = D - 1;  // the vertical axis: y in 2D, z in 3D
   const double g = std::abs(scene.gravity[up]), H = ref.length, z0 = ref.origin[up];
+  // pressure_layer_mean: the same against the mean of each horizontal layer dx thick (count,
+  // sum of P, sum of z per layer, summed over the ranks)
+  const int layers = static_cast<int>(std::ceil(H / scene.dx)) + 1;
+  std::vector<double> layer(3 * layers, 0.0);
   double worst = 0, pe = 0;
   for (int i = 0; i < n; ++i) {
     const double z = hx(i, up) - z0;
     pe += hm(i) * g * z;
     if (H - z < 3 * scene.dx) continue;
     worst = std::max(worst, std::abs(hP(i) - scene.rho0 * g * (H - z)));
+    const int k = std::clamp(static_cast<int>(std::floor(z / scene.dx)), 0, layers - 1);
+    layer[3 * k] += 1;
+    layer[3 * k + 1] += hP(i);
+    layer[3 * k + 2] += z;
   }
   worst = comm.max(worst);
   pe = comm.sum(pe);
+  comm.sum_in_place(layer);
+  double worst_layer = 0;
+  for (int k = 0; k < layers; ++k) {
+    if (layer[3 * k] == 0) continue;
+    const double P_mean = layer[3 * k + 1] / layer[3 * k], z_mean = layer[3 * k + 2] / layer[3 * k];
+    worst_layer = std::max(worst_layer, std::abs(P_mean - scene.rho0 * g * (H - z_mean)));
+  }
   e["pressure_linf"] = worst / (scene.rho0 * g * H);
+  e["pressure_layer_mean"] = worst_layer / (scene.rho0 * g * H);
   e["kinetic_over_potential"] = d.kinetic_energy / pe;
 }
 
