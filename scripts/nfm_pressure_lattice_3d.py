@@ -9,7 +9,7 @@ extrapolated to the wall point (4.30) give, divided by the analytical Shepard fa
   E_i = sum_j V_j grad_i W_ij + sum_q s_q W_iq n_out            (zero in the continuum),
   M_i = sum_j V_j grad_i W_ij (x) (x_j - x_i) + the wall's part   (gamma_i I in the continuum).
 E_i is the uniform-pressure defect (it scales as 1/dx), M_i / gamma_i the linear one (fixed at
-fixed R/dx). usage: nfm_pressure_lattice_3d.py [R/dx] [dx m] [H m] [c0 m/s]"""
+fixed R/dx). usage: nfm_pressure_lattice_3d.py [R/dx] [dx m] [H m]"""
 import sys
 
 import numpy as np
@@ -38,12 +38,12 @@ def plane(d):  # integral of W over a plane at distance d
     return np.trapz(W(np.sqrt(d * d + s * s)) * 2 * np.pi * s, s)
 
 
-zz = np.linspace(-R, R, 2001)
+zz = np.linspace(-R, R, 4001)
 slab = np.array([plane(abs(z)) for z in zz])
 
 
 def gamma(d):  # the analytical Shepard factor at distance d from the floor
-    m = zz > -d
+    m = zz >= -d
     return np.trapz(slab[m], zz[m])
 
 

@@ -161,14 +161,8 @@ TEST_CASE("3D free surface: the top layer of a still tank is flagged, nothing al
   CHECK(wrong == 0);
 }
 
-TEST_CASE("Laminar square duct (L/10): velocity against the series solution after 3 s", "[nfm3d][case][duct]") {
-  // measured 6.9e-3 at L/10 (docs/validation.md: about second order over L/10, L/15, L/20)
-  Simulation<3> sim = run_case("duct_3d.yaml", {"discretisation.dx=0.1"});
-  const auto e = reference_errors(sim);
-  INFO("velocity_l2 " << e.at("velocity_l2"));
-  CHECK(e.at("velocity_l2") < 1e-2);
-  CHECK(wall_leaks(sim) == 0);
-}
+// The laminar square duct at L/10 (velocity L2 < 1e-2 after 3 s, measured 6.9e-3, no leak) is
+// checked on the run of `ondine validate --level quick` (CTest cli:validate_quick).
 
 TEST_CASE("A rotating 3D wall: points, normals, velocities and the Shepard factor turn with it", "[nfm3d][motion]") {
   // the 1 x 1 x 2 tank turning about the vertical axis through (0.5, 0.3, 0) at 0.7 rad/s
