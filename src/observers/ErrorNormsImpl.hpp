@@ -3,6 +3,7 @@
 // and ErrorNorms3d.cpp only.
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "kernels/Math.hpp"
 #include "kernels/turbulence/LogLaw.hpp"
@@ -14,6 +15,27 @@
 namespace ondine {
 
 namespace errors {
+
+// Means over horizontal layers dx thick (z in [k dx, (k + 1) dx), clamped to the first and the
+// last layer): each layer's particle count, mean height and mean of one quantity, over the ranks.
+class LayerMeans {
+ public:
+  LayerMeans(int layers, double dx) : dx_(dx), sums_(3 * layers, 0.0) {}
+  int layer_of(double z) const { return std::clamp(static_cast<int>(std::floor(z / dx_)), 0, layers() - 1); }
+  void add(double z, double value) {
+    const int k = layer_of(z);
+    sums_[3 * k] += 1, sums_[3 * k + 1] += z, sums_[3 * k + 2] += value;
+  }
+  void sum_over_ranks(const Communicator& comm) { comm.sum_in_place(sums_); }
+  int layers() const { return static_cast<int>(sums_.size() / 3); }
+  double count(int k) const { return sums_[3 * k]; }
+  double height(int k) const { return sums_[3 * k + 1] / sums_[3 * k]; }
+  double mean(int k) const { return sums_[3 * k + 2] / sums_[3 * k]; }
+
+ private:
+  double dx_;
+  std::vector<double> sums_;  // per layer: count, sum z, sum value
+};
 
 template <int D>
 bool every_axis_periodic(const Scene& scene) {
@@ -228,8 +250,7 @@ void log_law(const Simulation<D>& sim, std::map<std::string, double>& e) {
     const double z = hx(i, up) - ref.origin[up];
     return ref.plane && z > H ? 2 * H - z : z;
   };
-  const int rows = static_cast<int>(std::ceil(H / scene.dx));
-  std::vector<double> row(3 * rows, 0.0);  // per row: count, sum z, sum u_x
+  LayerMeans row(static_cast<int>(std::ceil(H / scene.dx)), scene.dx);  // u_x per row
   double num = 0, den = 0, num_bed = 0, den_bed = 0, first_us = 0, first_yp = 0, first = 0;
   for (int i = 0; i < n; ++i) {  // a diagnostic at the end of the run, on the host mirror
     const double z = height(i);
@@ -249,10 +270,9 @@ void log_law(const Simulation<D>& sim, std::map<std::string, double>& e) {
       first_yp += hy(i);
       first += 1;
     }
-    const int b = std::min(rows - 1, static_cast<int>(z / scene.dx));
-    row[3 * b] += 1, row[3 * b + 1] += z, row[3 * b + 2] += hu(i, 0);
+    row.add(z, hu(i, 0));
   }
-  for (double& v : row) v = comm.sum(v);
+  row.sum_over_ranks(comm);
   num = comm.sum(num), den = comm.sum(den), first = comm.sum(first);
   if (den > 0) e["velocity_l2"] = std::sqrt(num / den);
   if (comm.sum(den_bed) > 0) e["velocity_l2_near_bed"] = std::sqrt(comm.sum(num_bed) / comm.sum(den_bed));
@@ -262,9 +282,9 @@ void log_law(const Simulation<D>& sim, std::map<std::string, double>& e) {
   }
   // the mean profile over rows
   double mnum = 0, mden = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, fits = 0;
-  for (int b = 0; b < rows; ++b) {
-    if (row[3 * b] < 1) continue;
-    const double z = row[3 * b + 1] / row[3 * b], um = row[3 * b + 2] / row[3 * b];
+  for (int b = 0; b < row.layers(); ++b) {
+    if (row.count(b) < 1) continue;
+    const double z = row.height(b), um = row.mean(b);
     if (z * us / scene.nu < 30.0) continue;
     const double ue = law.speed(us, z);
     mnum += (um - ue) * (um - ue), mden += ue * ue;
@@ -285,10 +305,10 @@ void log_law(const Simulation<D>& sim, std::map<std::string, double>& e) {
     for (int i = 0; i < n; ++i) {
       const double z = height(i);
       if (!(z > 0) || z * us / scene.nu < 30.0) continue;
-      const int b = std::min(rows - 1, static_cast<int>(z / scene.dx));
+      const double u_mean = row.mean(row.layer_of(z));
       double d2 = 0;
       for (int a = 0; a < D; ++a) {
-        const double da = hu(i, a) - (a == 0 ? row[3 * b + 2] / row[3 * b] : 0.0);
+        const double da = hu(i, a) - (a == 0 ? u_mean : 0.0);
         d2 += da * da;
       }
       f2 += d2, k2 += 2.0 * D / 3.0 * hk(i);
@@ -346,30 +366,22 @@ void hydrostatic(const Simulation<D>& sim, const Diagnostics& d, std::map<std::s
   auto hm = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::Mass{}));
   constexpr int up = D - 1;  // the vertical axis: y in 2D, z in 3D
   const double g = std::abs(scene.gravity[up]), H = ref.length, z0 = ref.origin[up];
-  // pressure_layer_mean: the same against the mean of each horizontal layer dx thick (count,
-  // sum of P, sum of z per layer, summed over the ranks)
-  const int layers = static_cast<int>(std::ceil(H / scene.dx)) + 1;
-  std::vector<double> layer(3 * layers, 0.0);
+  // pressure_layer_mean: the same against the mean of each horizontal layer dx thick
+  LayerMeans layer(static_cast<int>(std::ceil(H / scene.dx)) + 1, scene.dx);
   double worst = 0, pe = 0;
   for (int i = 0; i < n; ++i) {
     const double z = hx(i, up) - z0;
     pe += hm(i) * g * z;
     if (H - z < 3 * scene.dx) continue;
     worst = std::max(worst, std::abs(hP(i) - scene.rho0 * g * (H - z)));
-    const int k = std::clamp(static_cast<int>(std::floor(z / scene.dx)), 0, layers - 1);
-    layer[3 * k] += 1;
-    layer[3 * k + 1] += hP(i);
-    layer[3 * k + 2] += z;
+    layer.add(z, hP(i));
   }
   worst = comm.max(worst);
   pe = comm.sum(pe);
-  comm.sum_in_place(layer);
+  layer.sum_over_ranks(comm);
   double worst_layer = 0;
-  for (int k = 0; k < layers; ++k) {
-    if (layer[3 * k] == 0) continue;
-    const double P_mean = layer[3 * k + 1] / layer[3 * k], z_mean = layer[3 * k + 2] / layer[3 * k];
-    worst_layer = std::max(worst_layer, std::abs(P_mean - scene.rho0 * g * (H - z_mean)));
-  }
+  for (int k = 0; k < layer.layers(); ++k)
+    if (layer.count(k) > 0) worst_layer = std::max(worst_layer, std::abs(layer.mean(k) - scene.rho0 * g * (H - layer.height(k))));
   e["pressure_linf"] = worst / (scene.rho0 * g * H);
   e["pressure_layer_mean"] = worst_layer / (scene.rho0 * g * H);
   e["kinetic_over_potential"] = d.kinetic_energy / pe;
