@@ -1,5 +1,5 @@
 #pragma once
-// Full (both-ways) neighbour list in CSR form, built from a CellList with a
+// Full (both-ways) neighbour list in CSR form (and the half list derived from it, build_half), built from a CellList with a
 // cut-off R + skin, so that it stays valid until some particle has moved more
 // than skin/2 (Verlet). Physics reads it only through num_neighbours(i) and
 // neighbour(i, n). Two passes: count per particle, scan, fill; no atomics, so
@@ -86,6 +86,42 @@ struct NeighbourList {
     Kokkos::parallel_for("ondine::NeighbourList::fill", Kokkos::RangePolicy<ExecSpace>(0, n), KOKKOS_LAMBDA(const int i) {
       int p = off(i);
       visit(i, [&](int j) { nb(p++) = j; });
+    });
+  }
+
+  // The half list of the particles [first, end) from their full list: each pair of two of them
+  // once (j > i), every partner outside the range (halos, other levels) still from i's side.
+  // Entries keep the full list's order.
+  void build_half(const NeighbourList<D>& full, int first, int end) {
+    const int n = static_cast<int>(full.offsets.extent(0)) - 1;
+    if (static_cast<int>(offsets.extent(0)) != n + 1)
+      offsets = Kokkos::View<int*, MemSpace>("ondine::NeighbourList::half_offsets", n + 1);
+    auto off = offsets;
+    const auto f = full;
+    Kokkos::parallel_for("ondine::NeighbourList::half_count", Kokkos::RangePolicy<ExecSpace>(0, n), KOKKOS_LAMBDA(const int i) {
+      int cnt = 0;
+      for (int a = f.offsets(i); a < f.offsets(i + 1); ++a) {
+        const int j = f.neighbours(a);
+        cnt += (j > i || j >= end || j < first) ? 1 : 0;
+      }
+      off(i + 1) = cnt;
+      if (i == 0) off(0) = 0;
+    });
+    Kokkos::parallel_scan("ondine::NeighbourList::half_scan", Kokkos::RangePolicy<ExecSpace>(0, n + 1),
+                          KOKKOS_LAMBDA(const int i, int& partial, const bool final) {
+                            partial += off(i);
+                            if (final) off(i) = partial;
+                          });
+    const int total_pairs = total();
+    if (static_cast<int>(neighbours.extent(0)) < total_pairs)
+      neighbours = Kokkos::View<int*, MemSpace>("ondine::NeighbourList::half_neighbours", total_pairs + total_pairs / 8);
+    auto nb = neighbours;
+    Kokkos::parallel_for("ondine::NeighbourList::half_fill", Kokkos::RangePolicy<ExecSpace>(0, n), KOKKOS_LAMBDA(const int i) {
+      int p = off(i);
+      for (int a = f.offsets(i); a < f.offsets(i + 1); ++a) {
+        const int j = f.neighbours(a);
+        if (j > i || j >= end || j < first) nb(p++) = j;
+      }
     });
   }
 };

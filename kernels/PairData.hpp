@@ -17,6 +17,8 @@ struct PairData {
   double P_i, P_j;
   double omega_j;  // m_j / rho_j
   Vec<D> u_i, u_j;
+  // read only by the half-list pass (kernels/SymmetricFluxPass.hpp), which fills them
+  double omega_i, inv_rho_j;
 };
 
 // Per-particle accumulator of the flux pass: du/dt and drho/dt, and dm/dt for the terms with

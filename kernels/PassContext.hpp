@@ -17,11 +17,16 @@
 namespace ondine {
 
 template <int D>
+struct PairScatter;  // kernels/SymmetricFluxPass.hpp
+
+template <int D>
 struct PassContext {
   // the particles [first, end) of one level, its radius and spacing, its lists
   int first = 0, end = 0;
   double R = 0, dx = 0;
   NeighbourList<D> list;
+  NeighbourList<D> half_list;          // scheme.pair_list: half: each pair of the level once
+  PairScatter<D>* scatter = nullptr;   // its scattered sums (set with the half list only)
   CellList<D> cells;       // the particle cell list (observers that start from a point)
   CellList<D> wall_cells;  // the wall points binned at R
   PeriodicBox<D> box;

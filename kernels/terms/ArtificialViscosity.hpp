@@ -21,5 +21,14 @@ struct ArtificialViscosity {
     const double Pi = -0.25 * alpha_R_c0 * (q.rho_i + q.rho_j) * mu;
     s.du += (-q.omega_j * Pi * q.inv_rho_i) * q.gradW;
   }
+  // both sides: Pi_ji = Pi_ij, grad_j W_ji = -grad_i W_ij
+  template <int D>
+  KOKKOS_INLINE_FUNCTION void pair_both(const PairData<D>& q, FluxSum<D>& si, FluxSum<D>& sj) const {
+    const double ux = dot(q.u_i - q.u_j, q.xij);
+    if (ux >= 0.0) return;
+    const double Pi = -0.25 * alpha_R_c0 * (q.rho_i + q.rho_j) * (ux / (q.r * q.r + eps_R2));
+    si.du += (-q.omega_j * Pi * q.inv_rho_i) * q.gradW;
+    sj.du += (q.omega_i * Pi * q.inv_rho_j) * q.gradW;
+  }
 };
 }  // namespace ondine::term

@@ -13,5 +13,10 @@ struct BackgroundPressure {
   KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {
     s.du += (-2.0 * P_min * q.omega_j * q.inv_rho_i) * q.gradW;
   }
+  template <int D>
+  KOKKOS_INLINE_FUNCTION void pair_both(const PairData<D>& q, FluxSum<D>& si, FluxSum<D>& sj) const {
+    si.du += (-2.0 * P_min * q.omega_j * q.inv_rho_i) * q.gradW;
+    sj.du += (2.0 * P_min * q.omega_i * q.inv_rho_j) * q.gradW;
+  }
 };
 }  // namespace ondine::term

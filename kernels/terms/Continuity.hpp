@@ -11,5 +11,12 @@ struct Continuity {
   KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {
     s.drho -= q.rho_i * q.omega_j * dot(q.u_j - q.u_i, q.gradW);
   }
+  // both sides: (u_i - u_j) . grad_j W_ji = (u_j - u_i) . grad_i W_ij
+  template <int D>
+  KOKKOS_INLINE_FUNCTION void pair_both(const PairData<D>& q, FluxSum<D>& si, FluxSum<D>& sj) const {
+    const double div = dot(q.u_j - q.u_i, q.gradW);
+    si.drho -= q.rho_i * q.omega_j * div;
+    sj.drho -= q.rho_j * q.omega_i * div;
+  }
 };
 }  // namespace ondine::term

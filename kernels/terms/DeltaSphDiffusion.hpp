@@ -14,14 +14,23 @@ struct DeltaSphDiffusion {
   static DeltaSphDiffusion from(const PassContext<D>& c) { return DeltaSphDiffusion{c.delta_coeff, c.grad_rho}; }
   double coeff;  // delta c0 R
   field_view_t<field::DensityGradient, D> grad_rho;
-  KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {
+  KOKKOS_INLINE_FUNCTION double psi_dot_gradW(const PairData<D>& q) const {
     const double r2 = q.r * q.r;
     double psi_dot = 0.0;
     for (int k = 0; k < D; ++k) {
       const double psi = -2.0 * (q.rho_j - q.rho_i) * q.xij[k] / r2 - (grad_rho(q.i, k) + grad_rho(q.j, k));
       psi_dot += psi * q.gradW[k];
     }
-    s.drho += coeff * q.omega_j * psi_dot;
+    return psi_dot;
+  }
+  KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {
+    s.drho += coeff * q.omega_j * psi_dot_gradW(q);
+  }
+  // both sides: Psi_ji = Psi_ij and grad_j W_ji = -grad_i W_ij
+  KOKKOS_INLINE_FUNCTION void pair_both(const PairData<D>& q, FluxSum<D>& si, FluxSum<D>& sj) const {
+    const double f = coeff * psi_dot_gradW(q);
+    si.drho += q.omega_j * f;
+    sj.drho -= q.omega_i * f;
   }
 };
 }  // namespace ondine::term

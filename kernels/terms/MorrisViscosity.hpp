@@ -16,5 +16,13 @@ struct MorrisViscosity {
     const double f = nu * q.omega_j * (q.rho_i + q.rho_j) * q.inv_rho_i * q.dWdr / q.r;
     s.du += f * (q.u_i - q.u_j);
   }
+  // both sides: u_ji = -u_ij
+  template <int D>
+  KOKKOS_INLINE_FUNCTION void pair_both(const PairData<D>& q, FluxSum<D>& si, FluxSum<D>& sj) const {
+    const double f = nu * (q.rho_i + q.rho_j) * q.dWdr / q.r;
+    const Vec<D> uij = q.u_i - q.u_j;
+    si.du += (f * q.omega_j * q.inv_rho_i) * uij;
+    sj.du -= (f * q.omega_i * q.inv_rho_j) * uij;
+  }
 };
 }  // namespace ondine::term

@@ -11,5 +11,12 @@ struct PressureGradient {
   KOKKOS_INLINE_FUNCTION void pair(const PairData<D>& q, FluxSum<D>& s) const {
     s.du += (-q.omega_j * (q.P_i + q.P_j) * q.inv_rho_i) * q.gradW;
   }
+  // both sides of the pair at once (grad_j W_ji = -grad_i W_ij)
+  template <int D>
+  KOKKOS_INLINE_FUNCTION void pair_both(const PairData<D>& q, FluxSum<D>& si, FluxSum<D>& sj) const {
+    const double P = q.P_i + q.P_j;
+    si.du += (-q.omega_j * P * q.inv_rho_i) * q.gradW;
+    sj.du += (q.omega_i * P * q.inv_rho_j) * q.gradW;
+  }
 };
 }  // namespace ondine::term

@@ -143,7 +143,8 @@ void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
     r.only_keys(sc, "scheme", {"viscous_term", "delta_sph", "artificial_viscosity", "background_pressure",
                                "time_integrator", "cfl", "shifting", "transport", "consistent_laplacian",
                                "wall_velocity_reconstruction", "renormalised_continuity", "density_gradient", "flux",
-                               "riemann", "ale"});
+                               "riemann", "ale", "pair_list"});
+    if (sc["pair_list"]) s.half_pair_list = r.word(sc["pair_list"], "scheme.pair_list", {"full", "half"}) == "half";
     if (sc["renormalised_continuity"])
       s.renormalised_continuity = r.boolean(sc["renormalised_continuity"], "scheme.renormalised_continuity");
     if (sc["wall_velocity_reconstruction"])
@@ -212,6 +213,12 @@ void check_viscosity(const Reader& r, YAML::Node& root, const Scene& s) {
 
 void check_flux_scheme(const Reader& r, YAML::Node& root, const Scene& s) {
   const FluxKey k = flux_key(s);
+  // the terms with a half-list form (pair_both: kernels/terms/*.hpp)
+  if (s.half_pair_list && !((k.base == FluxBase::Centred || k.base == FluxBase::CentredDeltaSph) &&
+                            (k.viscosity == PairViscosity::None || k.viscosity == PairViscosity::Morris)))
+    r.fail(root["scheme"]["pair_list"], "scheme.pair_list",
+           "half is built for the centred fluxes (delta-SPH or not) with Morris viscosity or none, artificial viscosity and the "
+           "background pressure; this scene's terms are " + describe(k) + ": use full");
   if (flux_scheme_index(k) >= 0) return;
   r.fail(root["scheme"], "scheme",
          "selects a flux scheme that is not built (" + describe(k) + "); the built ones are:\n" + list_flux_schemes() +

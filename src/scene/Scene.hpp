@@ -254,6 +254,9 @@ struct Scene {
   double cfl_force = 0.25;      // [V&I 11]
   int reorder_interval = 50;    // steps between particle reorderings by cell
   double neighbour_skin = 0.3;  // Verlet skin, in dx (0: the list is rebuilt at every evaluation)
+  // scheme.pair_list: half: the flux pass evaluates each pair once and updates both particles
+  // (kernels/SymmetricFluxPass.hpp); the sums' order then depends on the thread count
+  bool half_pair_list = false;
 
   // time and output
   double duration = 0.0;         // s

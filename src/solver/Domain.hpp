@@ -28,7 +28,7 @@ class Domain {
  public:
   Domain() = default;
   // `cutoff` = R + skin (the cell size and the list radius), `skin` the Verlet skin length
-  Domain(const Scene& scene, double cutoff, double skin) : cutoff_(cutoff), skin_(skin) {
+  Domain(const Scene& scene, double cutoff, double skin) : cutoff_(cutoff), skin_(skin), half_(scene.half_pair_list) {
     for (int k = 0; k < D; ++k) {
       box_.lo[k] = scene.domain.min[k];
       box_.len[k] = scene.domain.max[k] - scene.domain.min[k];
@@ -50,6 +50,8 @@ class Domain {
   double skin() const { return skin_; }
   const CellList<D>& cells() const { return cells_; }
   const NeighbourList<D>& list() const { return list_; }
+  // scheme.pair_list: half: each pair of owned particles once (kernels/SymmetricFluxPass.hpp); empty otherwise
+  const NeighbourList<D>& half_list() const { return half_list_; }
   const OrbLookup<D>& orb() const { return orb_; }
   const Decomposition& decomposition() const { return decomposition_; }
   const ParticleExchange<D>& exchange() const { return exchange_; }
@@ -71,7 +73,10 @@ class Domain {
   // the cell list over the first `count` particles (owned + halos)
   void build_cells(const field_view_t<field::Position, D>& x, int count) { cells_.build(local_grid_, x, count); }
   // the uniform list of the n owned particles (radius R + skin), from the current cells
-  void build_list(const field_view_t<field::Position, D>& x, int n) { list_.build(cells_, box_, x, n, cutoff_); }
+  void build_list(const field_view_t<field::Position, D>& x, int n) {
+    list_.build(cells_, box_, x, n, cutoff_);
+    if (half_) half_list_.build_half(list_, 0, n);
+  }
   // a list build is complete: the Verlet reference positions are these
   void built(const field_view_t<field::Position, D>& x) {
     set_reference(x);
@@ -189,6 +194,8 @@ class Domain {
   ParticleExchange<D> exchange_;
   CellList<D> cells_;
   NeighbourList<D> list_;
+  bool half_ = false;
+  NeighbourList<D> half_list_;
   field_view_t<field::Position, D> x_at_build_;
   bool list_valid_ = false, halos_fresh_ = true;
   std::int64_t builds_ = 0;

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "kernels/FluxPass.hpp"
+#include "kernels/SymmetricFluxPass.hpp"
 #include "kernels/PassContext.hpp"
 #include "kernels/terms/ArtificialViscosity.hpp"
 #include "kernels/terms/BackgroundPressure.hpp"
@@ -88,9 +89,21 @@ using RowTerms = decltype(concat(typename BaseTerms<D, flux_schemes[I].key.base>
                                  std::conditional_t<flux_schemes[I].key.artificial_viscosity, TypeList<term::ArtificialViscosity>, TypeList<>>{},
                                  std::conditional_t<flux_schemes[I].key.background_pressure, TypeList<term::BackgroundPressure>, TypeList<>>{}));
 
+// scheme.pair_list: half runs the packs whose every term has pair_both on the half list (the
+// case reader refuses the others with it)
 template <int D, class Kernel, class... T>
 void run_flux(const PassContext<D>& c) {
   using Pack = Terms<T...>;
+  if (c.scatter != nullptr) {
+    if constexpr (Pack::template symmetric<D>) {
+      SymmetricFluxPass<D, Kernel, Pack>{c.half_list, c.box, Kernel(c.R), c.R * c.R, c.body, c.x, c.u, c.rho, c.P, c.m,
+                                         c.du, c.drho, Pack(T::from(c)...), c.scatter, c.first, c.end}
+          .run();
+      return;
+    } else {
+      throw std::logic_error("scheme.pair_list: half: the flux terms " + Pack::names() + " have no half-list form");
+    }
+  }
   FluxPass<D, Kernel, Pack> pass{c.list, c.box, Kernel(c.R), c.R * c.R, c.body, c.x, c.u, c.rho, c.P, c.m,
                                  c.du, c.drho, Pack(T::from(c)...), c.dm};
   pass.run(c.first, c.end);

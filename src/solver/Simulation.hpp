@@ -23,6 +23,7 @@
 #include "kernels/Integrator.hpp"
 #include "kernels/NeighbourList.hpp"
 #include "kernels/OrbLookup.hpp"
+#include "kernels/SymmetricFluxPass.hpp"
 #include "kernels/WallPressure.hpp"
 #include "io/Checkpoint.hpp"
 #include "parallel/Communicator.hpp"
@@ -49,6 +50,7 @@ struct LevelSpan {
   int first = 0, active_end = 0, end = 0;  // SPH particles [first, active_end), guards [active_end, end)
   double R = 0, dx = 0;
   NeighbourList<D> list;   // the level's SPH pairs (L. with zones; the uniform list otherwise)
+  NeighbourList<D> half_list;  // scheme.pair_list: half (uniform runs): each pair of the level once
   WallPoints<D> wall;      // the wall quadrature points of the level (its spacing)
   CellList<D> wall_cells;  // those points binned at R
 };
@@ -144,7 +146,8 @@ class Simulation {
   double wall_spacing_ = 0;  // the wall quadrature's spacing (wall_quadrature_spacing)
   CompiledScheme<D> scheme_;  // every kernel-dependent pass, chosen once (Scheme.hpp)
   WallModel<D> walls_;
-  LaplacianWeightView<D> laplacian_weights_;  // scratch of evaluate() (kernels/ConsistentLaplacian.hpp)
+  LaplacianWeightView<D> laplacian_weights_;
+  mutable PairScatter<D> pair_scatter_;  // scheme.pair_list: half: the flux pass's scattered sums  // scratch of evaluate() (kernels/ConsistentLaplacian.hpp)
   double stage_time_ = 0;
   double t_ = 0;
   std::int64_t steps_ = 0;

@@ -43,6 +43,10 @@ PassContext<D> Simulation<D>::context(const LevelSpan<D>& L) const {
   c.R = L.R;
   c.dx = L.dx;
   c.list = L.list;
+  if (scene_.half_pair_list) {
+    c.half_list = L.half_list;
+    c.scatter = &pair_scatter_;
+  }
   c.cells = domain_.cells();
   c.wall_cells = L.wall_cells;
   c.box = domain_.box();

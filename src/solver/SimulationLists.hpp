@@ -11,7 +11,7 @@ namespace ondine {
 template <int D>
 std::vector<LevelSpan<D>> Simulation<D>::levels() const {
   if (refinement_) return refinement_->levels(walls_);
-  return {{0, 0, n_own_, n_own_, R_, scene_.dx, domain_.list(), walls_.points(), walls_.cells()}};
+  return {{0, 0, n_own_, n_own_, R_, scene_.dx, domain_.list(), domain_.half_list(), walls_.points(), walls_.cells()}};
 }
 
 // The lists are rebuilt once some particle (on any rank) moved more than skin/2 since the

@@ -34,8 +34,8 @@ class Refinement final : public StepHook<D> {
     std::vector<LevelSpan<D>> out;
     for (int l = 0; l < apr_.levels(); ++l) {
       const WallModel<D>& w = l == 0 || l >= static_cast<int>(level_walls_.size()) ? base : level_walls_[l];
-      out.push_back({l, apr_.first(l), apr_.active_end(l), apr_.end(l), apr_.R(l), apr_.dx(l), apr_.symmetric_list(), w.points(),
-                     w.cells()});
+      out.push_back({l, apr_.first(l), apr_.active_end(l), apr_.end(l), apr_.R(l), apr_.dx(l), apr_.symmetric_list(), {},
+                     w.points(), w.cells()});
     }
     return out;
   }
