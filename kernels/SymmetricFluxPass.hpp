@@ -21,14 +21,15 @@ template <int D>
 struct PairScatter {
   using Device = Kokkos::Device<ExecSpace, MemSpace>;
   using VectorScatter = Kokkos::Experimental::ScatterView<double* [D], Kokkos::LayoutLeft, Device>;
-  using ScalarScatter = Kokkos::Experimental::ScatterView<double*, Kokkos::LayoutRight, Device>;
+  // the layout of the fields it adds into (a scalar field's is the backend's default)
+  using ScalarScatter = Kokkos::Experimental::ScatterView<double*, typename field_view_t<field::DensityRate, D>::array_layout, Device>;
   VectorScatter du;
   ScalarScatter drho;
   std::size_t n = 0;
   void ensure(std::size_t extent) {
     if (n == extent && du.is_allocated()) return;
-    du = VectorScatter(Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>("ondine::Flux::scatter_du", extent));
-    drho = ScalarScatter(Kokkos::View<double*, MemSpace>("ondine::Flux::scatter_drho", extent));
+    du = VectorScatter(field_view_t<field::Acceleration, D>("ondine::Flux::scatter_du", extent));
+    drho = ScalarScatter(field_view_t<field::DensityRate, D>("ondine::Flux::scatter_drho", extent));
     n = extent;
   }
 };

@@ -87,9 +87,10 @@ def interp(T):
     return z[-1]
 rms = (sum(((interp(T) - Z) / Z) ** 2 for T, Z in pts) / len(pts)) ** 0.5
 s = json.load(open(d + "/summary.json"))
-# pair interactions per second of the flux pass alone: particles x mean neighbours (both ways)
-# x 4 evaluations per RK4 step x steps over the loop's time (the density-gradient and wall
-# passes read the same pairs again and are not counted)
+# the flux pass's pair interactions (particles x mean neighbours, both ways, x 4 evaluations per
+# RK4 step x steps) over the whole loop's time, every other pass included (the density-gradient
+# and wall passes read the same pairs again and are not counted); the flux pass's own rate, over
+# its kernel time alone: perf/flux_pair_rate.sh
 pairs = s["particles"] * s.get("mean_neighbours", 0.0) * 4 * s["total_steps"] / s["loop_seconds"]
 gradient_passes = 1 if scheme == "case" else 4  # (with riemann the pass also gathers grad u)
 print(json.dumps({"code": "ondine", "scheme": scheme, "width": int(w), "run": int(r), "wall_seconds": s["wall_seconds"],

@@ -63,6 +63,7 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
   read_reference(r, root, s);
   read_refinement(r, root, s);
   read_open_boundaries(r, root, s);
+  resolve_pair_list(s);
   check_memory(r, root, s);
   return s;
 }

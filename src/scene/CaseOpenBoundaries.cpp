@@ -92,8 +92,6 @@ void read_open_boundaries(const Reader& r, YAML::Node& root, Scene& s) {
   if (!ob.IsSequence() || ob.size() == 0) r.fail(ob, "open_boundaries", "expected a list of inlets and outlets");
   if (ob.size() > static_cast<std::size_t>(kMaxOpenBoundaries))
     r.fail(ob, "open_boundaries", "more than " + std::to_string(kMaxOpenBoundaries) + " open boundaries");
-  if (s.half_pair_list)
-    r.fail(ob, "open_boundaries", "scheme.pair_list: half is not supported with open boundaries: use full");
   if (s.flux == FluxScheme::Riemann && s.riemann_variant == RiemannVariant::Vila)
     r.fail(ob, "open_boundaries", "Vila's Riemann-SPH (masses that change by fluxes) is not supported with open boundaries: use scheme.riemann.variant: leduc");
   for (std::size_t i = 0; i < ob.size(); ++i) {

@@ -211,14 +211,16 @@ void check_viscosity(const Reader& r, YAML::Node& root, const Scene& s) {
     r.fail(fl["viscosity"], "fluid.viscosity", "is > 0 but scheme.viscous_term is none; choose morris or monaghan_gingold");
 }
 
+void resolve_pair_list(Scene& s) {
+  if (!s.half_pair_list) return;
+  const FluxKey k = flux_key(s);  // the terms with a half-list form (pair_both: kernels/terms/*.hpp)
+  const bool terms = (k.base == FluxBase::Centred || k.base == FluxBase::CentredDeltaSph) &&
+                     (k.viscosity == PairViscosity::None || k.viscosity == PairViscosity::Morris);
+  s.half_pair_list = terms && s.refinement_zones.empty() && s.open_boundaries.empty();
+}
+
 void check_flux_scheme(const Reader& r, YAML::Node& root, const Scene& s) {
   const FluxKey k = flux_key(s);
-  // the terms with a half-list form (pair_both: kernels/terms/*.hpp)
-  if (s.half_pair_list && !((k.base == FluxBase::Centred || k.base == FluxBase::CentredDeltaSph) &&
-                            (k.viscosity == PairViscosity::None || k.viscosity == PairViscosity::Morris)))
-    r.fail(root["scheme"]["pair_list"], "scheme.pair_list",
-           "half is built for the centred fluxes (delta-SPH or not) with Morris viscosity or none, artificial viscosity and the "
-           "background pressure; this scene's terms are " + describe(k) + ": use full");
   if (flux_scheme_index(k) >= 0) return;
   r.fail(root["scheme"], "scheme",
          "selects a flux scheme that is not built (" + describe(k) + "); the built ones are:\n" + list_flux_schemes() +

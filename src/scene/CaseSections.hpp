@@ -30,6 +30,9 @@ void read_scheme(const Reader& r, YAML::Node& root, Scene& s);
 void check_viscosity(const Reader& r, YAML::Node& root, const Scene& s);
 // the scheme keys select one of the named flux schemes (scene/FluxSchemes.hpp)
 void check_flux_scheme(const Reader& r, YAML::Node& root, const Scene& s);
+// scheme.pair_list: half is kept where the half-list pass is built (the centred fluxes with Morris
+// viscosity or none, uniform runs without open boundaries); elsewhere the full list is used
+void resolve_pair_list(Scene& s);
 void read_sound_speed(const Reader& r, YAML::Node& root, Scene& s);
 void read_time(const Reader& r, YAML::Node& root, Scene& s);
 void read_parallel(const Reader& r, YAML::Node& root, Scene& s);

@@ -255,7 +255,8 @@ struct Scene {
   int reorder_interval = 50;    // steps between particle reorderings by cell
   double neighbour_skin = 0.3;  // Verlet skin, in dx (0: the list is rebuilt at every evaluation)
   // scheme.pair_list: half: the flux pass evaluates each pair once and updates both particles
-  // (kernels/SymmetricFluxPass.hpp); the sums' order then depends on the thread count
+  // (kernels/SymmetricFluxPass.hpp); the sums' order then depends on the thread count. After
+  // parsing, true only where that pass is built (resolve_pair_list)
   bool half_pair_list = false;
 
   // time and output
