@@ -7,15 +7,17 @@
 # ../shared/perf/pairbench.cpp (300 x 300, R = 4 dx, 3 runs, median). Writes
 # perf/results/large-run-3d-<date>.json: particles, steps, seconds per step,
 # particle-steps/s, peak resident memory, bytes per particle, the estimate, the yardstick.
-# usage: perf/large_run_3d.sh [--particles 1000000] [--steps 20] [--out perf/results]
+# --set KEY=VALUE (repeatable) passes an override to the run (e.g. scheme.pair_list=full).
+# usage: perf/large_run_3d.sh [--particles 1000000] [--steps 20] [--set KEY=VALUE ...] [--out perf/results]
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
-particles=1000000; steps=20; out="$here/perf/results"
+particles=1000000; steps=20; out="$here/perf/results"; sets=()
 while [ $# -gt 0 ]; do
   case $1 in
     --particles) particles=$2; shift 2 ;;
     --steps) steps=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
+    --set) sets+=(--set "$2"); shift 2 ;;
     *) echo "perf/large_run_3d.sh: unknown option $1 (see the header of the script)" >&2; exit 2 ;;
   esac
 done
@@ -33,7 +35,7 @@ fi
 dx=$("$py" -c "print((1.228 * 1.0 * 0.55 / $particles) ** (1.0 / 3.0))")  # the column is 1.228 x 1 x 0.55 m
 load_before=$(cut -d' ' -f1 /proc/loadavg)
 OMP_NUM_THREADS=2 /usr/bin/time -v -o "$work/time" "$ondine" run "$here/cases/spheric_test2_3d.yaml" --out "$work/run" \
-  --set discretisation.dx="$dx" --set time.max_steps="$steps" --set time.output_interval=1000 2> "$work/run.log"
+  --set discretisation.dx="$dx" --set time.max_steps="$steps" --set time.output_interval=1000 "${sets[@]}" 2> "$work/run.log"
 load_after=$(cut -d' ' -f1 /proc/loadavg)
 cp "$work/run.log" "$out/large-run-3d-$stamp.log"
 "$py" - "$work" "$dx" "$load_before" "$load_after" > "$out/large-run-3d-$stamp.json" <<'PY'
@@ -46,7 +48,7 @@ estimate = next((l[len("ondine: "):] for l in log.splitlines() if l.startswith("
 yard = [json.loads(l) for l in open(f"{work}/pairbench") if l.strip().startswith("{")]
 rates = [y["pair_interactions_per_s"] for y in yard]
 print(json.dumps({
-    "case": "spheric_test2_3d", "dx": dx, "particles": s["particles"], "steps": s["total_steps"], "threads": s.get("threads"),
+    "case": "spheric_test2_3d", "dx": dx, "pair_list": s.get("scheme", {}).get("pair_list", "full"), "particles": s["particles"], "steps": s["total_steps"], "threads": s.get("threads"),
     "loop_seconds": s["loop_seconds"], "seconds_per_step": s["loop_seconds"] / s["total_steps"],
     "particle_steps_per_second": s["particle_steps_per_second"], "peak_rss_bytes": rss_kb * 1024,
     "bytes_per_particle_including_fixed_overhead": rss_kb * 1024 / s["particles"], "memory_estimate": estimate,

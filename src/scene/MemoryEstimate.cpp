@@ -66,6 +66,14 @@ MemoryEstimate estimate_memory(const Scene& s) {
   const double support = std::max(1.0, std::pow(s.R_over_dx / 3.0, D));
   e.bytes_per_particle = (D == 3 ? kBytesPerParticle3D : kBytesPerParticle2D) * support;
   e.bytes_per_refined_particle = (D == 3 ? kBytesPerRefinedParticle3D : kBytesPerRefinedParticle2D) * support;
+  // scheme.pair_list: half adds its list (half the entries within R + skin, 4 B each) and the
+  // flux's per-thread copies of du and drho (measured at 1e6 particles in 3D, R = 2.5 dx:
+  // +238 B per particle, this formula 248 B; perf/README.md)
+  if (s.half_pair_list) {
+    const double reach = s.R_over_dx + s.neighbour_skin, pi = 3.14159265358979;
+    const double entries = D == 3 ? 4.0 / 3.0 * pi * reach * reach * reach : pi * reach * reach;
+    e.bytes_per_particle += 0.5 * entries * 4.0 + 8.0 * (D + 1) * env_int("OMP_NUM_THREADS", 2);
+  }
   e.ranks = env_int("OMPI_COMM_WORLD_SIZE", 1);
   e.ranks_here = std::min(env_int("OMPI_COMM_WORLD_LOCAL_SIZE", e.ranks), e.ranks);
   const double share = static_cast<double>(e.ranks_here) / e.ranks;  // of the particles, on this machine
