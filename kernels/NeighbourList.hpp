@@ -4,6 +4,8 @@
 // than skin/2 (Verlet). Physics reads it only through num_neighbours(i) and
 // neighbour(i, n). Two passes: count per particle, scan, fill; no atomics, so
 // the order is the deterministic cell order.
+#include <string>
+
 #include "kernels/CellList.hpp"
 
 namespace ondine {
@@ -60,68 +62,56 @@ struct NeighbourList {
 
   template <class PositionView>
   void build(const CellList<D>& cells, const PeriodicBox<D>& box, const PositionView& x, int n, double cutoff) {
-    if (static_cast<int>(offsets.extent(0)) != n + 1)
-      offsets = Kokkos::View<int*, MemSpace>("ondine::NeighbourList::offsets", n + 1);
-    const double cut2 = cutoff * cutoff;
-    const auto g = cells.grid;
-    const auto start = cells.cell_start;
-    const auto perm = cells.sorted;
-    auto off = offsets;
-    const CutoffVisitor<D, PositionView> visit{g, box, start, perm, x, cut2};
-    Kokkos::parallel_for("ondine::NeighbourList::count", Kokkos::RangePolicy<ExecSpace>(0, n), KOKKOS_LAMBDA(const int i) {
-      int cnt = 0;
-      visit(i, [&](int) { ++cnt; });
-      off(i + 1) = cnt;
-      if (i == 0) off(0) = 0;
-    });
-    Kokkos::parallel_scan("ondine::NeighbourList::scan", Kokkos::RangePolicy<ExecSpace>(0, n + 1),
-                          KOKKOS_LAMBDA(const int i, int& partial, const bool final) {
-                            partial += off(i);
-                            if (final) off(i) = partial;
-                          });
-    const int total_pairs = total();
-    if (static_cast<int>(neighbours.extent(0)) < total_pairs)
-      neighbours = Kokkos::View<int*, MemSpace>("ondine::NeighbourList::neighbours", total_pairs + total_pairs / 8);
-    auto nb = neighbours;
-    Kokkos::parallel_for("ondine::NeighbourList::fill", Kokkos::RangePolicy<ExecSpace>(0, n), KOKKOS_LAMBDA(const int i) {
-      int p = off(i);
-      visit(i, [&](int j) { nb(p++) = j; });
-    });
+    fill(n, CutoffVisitor<D, PositionView>{cells.grid, box, cells.cell_start, cells.sorted, x, cutoff * cutoff},
+         "ondine::NeighbourList::");
   }
 
   // The half list of the particles [first, end) from their full list: each pair of two of them
   // once (j > i), every partner outside the range (halos, other levels) still from i's side.
   // Entries keep the full list's order.
   void build_half(const NeighbourList<D>& full, int first, int end) {
-    const int n = static_cast<int>(full.offsets.extent(0)) - 1;
-    if (static_cast<int>(offsets.extent(0)) != n + 1)
-      offsets = Kokkos::View<int*, MemSpace>("ondine::NeighbourList::half_offsets", n + 1);
-    auto off = offsets;
-    const auto f = full;
-    Kokkos::parallel_for("ondine::NeighbourList::half_count", Kokkos::RangePolicy<ExecSpace>(0, n), KOKKOS_LAMBDA(const int i) {
-      int cnt = 0;
-      for (int a = f.offsets(i); a < f.offsets(i + 1); ++a) {
-        const int j = f.neighbours(a);
-        cnt += (j > i || j >= end || j < first) ? 1 : 0;
+    fill(static_cast<int>(full.offsets.extent(0)) - 1, HalfVisitor{full.offsets, full.neighbours, first, end},
+         "ondine::NeighbourList::half_");
+  }
+
+  // (public: nvcc refuses an extended lambda in a private member function)
+  // calls f(j) for the entries of i's full list that the half list keeps
+  struct HalfVisitor {
+    Kokkos::View<int*, MemSpace> offsets, neighbours;
+    int first, end;
+    template <class F>
+    KOKKOS_INLINE_FUNCTION void operator()(const int i, F&& f) const {
+      for (int a = offsets(i); a < offsets(i + 1); ++a) {
+        const int j = neighbours(a);
+        if (j > i || j >= end || j < first) f(j);
       }
+    }
+  };
+
+  // The CSR list of particles [0, n) whose partners visit(i, f) gives: count, scan, fill
+  // (kernels labelled prefix + count / scan / fill).
+  template <class Visit>
+  void fill(int n, const Visit& visit, const std::string& prefix) {
+    if (static_cast<int>(offsets.extent(0)) != n + 1) offsets = Kokkos::View<int*, MemSpace>(prefix + "offsets", n + 1);
+    auto off = offsets;
+    Kokkos::parallel_for(prefix + "count", Kokkos::RangePolicy<ExecSpace>(0, n), KOKKOS_LAMBDA(const int i) {
+      int cnt = 0;
+      visit(i, [&](int) { ++cnt; });
       off(i + 1) = cnt;
       if (i == 0) off(0) = 0;
     });
-    Kokkos::parallel_scan("ondine::NeighbourList::half_scan", Kokkos::RangePolicy<ExecSpace>(0, n + 1),
+    Kokkos::parallel_scan(prefix + "scan", Kokkos::RangePolicy<ExecSpace>(0, n + 1),
                           KOKKOS_LAMBDA(const int i, int& partial, const bool final) {
                             partial += off(i);
                             if (final) off(i) = partial;
                           });
     const int total_pairs = total();
     if (static_cast<int>(neighbours.extent(0)) < total_pairs)
-      neighbours = Kokkos::View<int*, MemSpace>("ondine::NeighbourList::half_neighbours", total_pairs + total_pairs / 8);
+      neighbours = Kokkos::View<int*, MemSpace>(prefix + "neighbours", total_pairs + total_pairs / 8);
     auto nb = neighbours;
-    Kokkos::parallel_for("ondine::NeighbourList::half_fill", Kokkos::RangePolicy<ExecSpace>(0, n), KOKKOS_LAMBDA(const int i) {
+    Kokkos::parallel_for(prefix + "fill", Kokkos::RangePolicy<ExecSpace>(0, n), KOKKOS_LAMBDA(const int i) {
       int p = off(i);
-      for (int a = f.offsets(i); a < f.offsets(i + 1); ++a) {
-        const int j = f.neighbours(a);
-        if (j > i || j >= end || j < first) nb(p++) = j;
-      }
+      visit(i, [&](int j) { nb(p++) = j; });
     });
   }
 };

@@ -10,9 +10,7 @@
 
 #include <string>
 
-#include "kernels/NeighbourList.hpp"
-#include "kernels/NeighbourLoops.hpp"
-#include "kernels/Terms.hpp"
+#include "kernels/FluxPass.hpp"
 
 namespace ondine {
 
@@ -36,19 +34,8 @@ struct PairScatter {
 
 template <int D, class Kernel, class TermPack>
 struct SymmetricFluxPass {
+  FluxPass<D, Kernel, TermPack> f;  // the fields, kernel and terms of the full-list pass (its list unused)
   NeighbourList<D> half;
-  PeriodicBox<D> box;
-  Kernel W;
-  double R2;
-  Vec<D> body;
-  field_view_t<field::Position, D> x;
-  field_view_t<field::Velocity, D> u;
-  field_view_t<field::Density, D> rho;
-  field_view_t<field::Pressure, D> P;
-  field_view_t<field::Mass, D> m;
-  field_view_t<field::Acceleration, D> du;
-  field_view_t<field::DensityRate, D> drho;
-  TermPack terms;
   PairScatter<D>* scatter;
   int first = 0, end = 0;
 
@@ -61,26 +48,26 @@ struct SymmetricFluxPass {
       auto a_drho = drho_s.access();
       PairData<D> q;
       q.i = i;
-      q.rho_i = p.rho(i);
+      q.rho_i = p.f.rho(i);
       q.inv_rho_i = 1.0 / q.rho_i;
-      q.omega_i = p.m(i) * q.inv_rho_i;
-      q.P_i = p.P(i);
-      q.u_i = load<D>(p.u, i);
-      const Vec<D> xi = load<D>(p.x, i);
+      q.omega_i = p.f.m(i) * q.inv_rho_i;
+      q.P_i = p.f.P(i);
+      q.u_i = load<D>(p.f.u, i);
+      const Vec<D> xi = load<D>(p.f.x, i);
       FluxSum<D> si{Vec<D>::zero(), 0.0};
-      for_each_neighbour_within<D>(p.half, p.box, p.x, i, xi, p.R2, [&](const int j, const Vec<D>& xij, const double r) {
+      for_each_neighbour_within<D>(p.half, p.f.box, p.f.x, i, xi, p.f.R2, [&](const int j, const Vec<D>& xij, const double r) {
         q.xij = xij;
         q.j = j;
         q.r = r;
-        q.dWdr = p.W.derivative(r);
+        q.dWdr = p.f.W.derivative(r);
         q.gradW = (q.dWdr / r) * xij;
-        q.rho_j = p.rho(j);
+        q.rho_j = p.f.rho(j);
         q.inv_rho_j = 1.0 / q.rho_j;
-        q.P_j = p.P(j);
-        q.omega_j = p.m(j) * q.inv_rho_j;
-        q.u_j = load<D>(p.u, j);
+        q.P_j = p.f.P(j);
+        q.omega_j = p.f.m(j) * q.inv_rho_j;
+        q.u_j = load<D>(p.f.u, j);
         FluxSum<D> sj{Vec<D>::zero(), 0.0};
-        p.terms.pair_both(q, si, sj);
+        p.f.terms.pair_both(q, si, sj);
         if (j >= p.first && j < p.end) {  // a partner of the level: its side of the pair
           for (int k = 0; k < D; ++k) a_du(j, k) += sj.du[k];
           a_drho(j) += sj.drho;
@@ -93,20 +80,20 @@ struct SymmetricFluxPass {
 
   void run() const {
     const std::string label = "ondine::Flux[" + TermPack::names() + "]";
-    scatter->ensure(du.extent(0));
+    const auto dv = f.du;
+    const auto dr = f.drho;
+    scatter->ensure(dv.extent(0));
     scatter->du.reset();
     scatter->drho.reset();
     Kokkos::parallel_for(label, Kokkos::RangePolicy<ExecSpace>(first, end), Pairs{*this, scatter->du, scatter->drho});
     // du = g + the scattered sums, drho = the scattered sums, over the level (contribute_into adds)
-    const auto dv = du;
-    const auto dr = drho;
-    const Vec<D> g = body;
+    const Vec<D> g = f.body;
     Kokkos::parallel_for("ondine::Flux::body", Kokkos::RangePolicy<ExecSpace>(first, end), KOKKOS_LAMBDA(const int i) {
       for (int k = 0; k < D; ++k) dv(i, k) = g[k];
       dr(i) = 0.0;
     });
-    scatter->du.contribute_into(du);
-    scatter->drho.contribute_into(drho);
+    scatter->du.contribute_into(dv);
+    scatter->drho.contribute_into(dr);
   }
 };
 

@@ -90,23 +90,17 @@ using RowTerms = decltype(concat(typename BaseTerms<D, flux_schemes[I].key.base>
                                  std::conditional_t<flux_schemes[I].key.background_pressure, TypeList<term::BackgroundPressure>, TypeList<>>{}));
 
 // scheme.pair_list: half runs the packs whose every term has pair_both on the half list (the
-// case reader refuses the others with it)
+// case reader keeps the full list for the others: resolve_pair_list)
 template <int D, class Kernel, class... T>
 void run_flux(const PassContext<D>& c) {
   using Pack = Terms<T...>;
-  if (c.scatter != nullptr) {
-    if constexpr (Pack::template symmetric<D>) {
-      SymmetricFluxPass<D, Kernel, Pack>{c.half_list, c.box, Kernel(c.R), c.R * c.R, c.body, c.x, c.u, c.rho, c.P, c.m,
-                                         c.du, c.drho, Pack(T::from(c)...), c.scatter, c.first, c.end}
-          .run();
-      return;
-    } else {
-      throw std::logic_error("scheme.pair_list: half: the flux terms " + Pack::names() + " have no half-list form");
-    }
-  }
-  FluxPass<D, Kernel, Pack> pass{c.list, c.box, Kernel(c.R), c.R * c.R, c.body, c.x, c.u, c.rho, c.P, c.m,
-                                 c.du, c.drho, Pack(T::from(c)...), c.dm};
-  pass.run(c.first, c.end);
+  const FluxPass<D, Kernel, Pack> pass{c.list, c.box, Kernel(c.R), c.R * c.R, c.body, c.x, c.u, c.rho, c.P, c.m,
+                                       c.du, c.drho, Pack(T::from(c)...), c.dm};
+  if (c.scatter == nullptr) return pass.run(c.first, c.end);
+  if constexpr (Pack::template symmetric<D>)
+    SymmetricFluxPass<D, Kernel, Pack>{pass, c.half_list, c.scatter, c.first, c.end}.run();
+  else
+    throw std::logic_error("scheme.pair_list: half: the flux terms " + Pack::names() + " have no half-list form");
 }
 
 template <int D, class Kernel, class... T>
