@@ -10,6 +10,8 @@ namespace ondine {
 
 using ExecSpace = Kokkos::DefaultExecutionSpace;
 using MemSpace = ExecSpace::memory_space;
+// the particles live on the host (OpenMP, Serial), not on a GPU
+inline constexpr bool host_backend = Kokkos::SpaceAccessibility<MemSpace, Kokkos::HostSpace>::accessible;
 
 namespace field {
 #define ONDINE_FIELD_(Name, label_, value_t, vector_, output_) \

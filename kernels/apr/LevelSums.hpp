@@ -35,7 +35,7 @@ struct ProbeSum {
   }
 };
 
-// sum over the leaves of m, m u_k (k = 0 .. D-1) or m |u|^2 / 2 (what = 0, 1 + k, D + 1)
+// sum over the leaves of m, m u_k (k = 0 .. D-1), m |u|^2 / 2 or -m g.x (what = 0, 1 + k, D + 1, D + 2)
 template <int D>
 struct LeafSum {
   using value_type = double;
@@ -43,11 +43,14 @@ struct LeafSum {
   field_view_t<field::Mass, D> m;
   field_view_t<field::AprMother, D> mother;
   int what;
+  field_view_t<field::Position, D> x = {};  // what = D + 2 only
+  Vec<D> g = Vec<D>::zero();
   KOKKOS_INLINE_FUNCTION void operator()(const int i, double& acc) const {
     if (mother(i)) return;
     if (what == 0) acc += m(i);
     else if (what <= D) acc += m(i) * u(i, what - 1);
-    else acc += 0.5 * m(i) * norm2(load<D>(u, i));
+    else if (what == D + 1) acc += 0.5 * m(i) * norm2(load<D>(u, i));
+    else acc -= m(i) * dot(g, load<D>(x, i));
   }
 };
 

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "kernels/Fields.hpp"
 #include "scene/CaseReader.hpp"
 #include "scene/CaseSections.hpp"
 
@@ -63,7 +64,7 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
   read_reference(r, root, s);
   read_refinement(r, root, s);
   read_open_boundaries(r, root, s);
-  resolve_pair_list(s);
+  resolve_pair_list(s, host_backend);
   check_memory(r, root, s);
   return s;
 }

@@ -153,7 +153,6 @@ void read_reference(const Reader& r, YAML::Node& root, Scene& s) {
     if (D != 2 && s.reference.kind != ReferenceKind::Hydrostatic && s.reference.kind != ReferenceKind::Duct &&
         s.reference.kind != ReferenceKind::SphericTest2)
       r.fail(rf["type"], "reference.type", "in 3D hydrostatic, duct or spheric_test2 (the other references are 2D)");
-    if (D != 3 && s.reference.kind == ReferenceKind::SphericTest2) r.fail(rf["type"], "reference.type", "spheric_test2 is a 3D reference");
     if (s.reference.kind == ReferenceKind::SphericTest2) read_spheric_reference(r, rf, s);
     else if (rf["file"]) r.fail(rf["file"], "reference.file", "only a spheric_test2 reference takes a file");
     if (D != 3 && s.reference.kind == ReferenceKind::Duct) r.fail(rf["type"], "reference.type", "duct is a 3D reference");

@@ -211,12 +211,14 @@ void check_viscosity(const Reader& r, YAML::Node& root, const Scene& s) {
     r.fail(fl["viscosity"], "fluid.viscosity", "is > 0 but scheme.viscous_term is none; choose morris or monaghan_gingold");
 }
 
-void resolve_pair_list(Scene& s) {
+void resolve_pair_list(Scene& s, bool host_backend) {
   if (!s.half_pair_list) return;
   const FluxKey k = flux_key(s);  // the terms with a half-list form (pair_both: kernels/terms/*.hpp)
   const bool terms = (k.base == FluxBase::Centred || k.base == FluxBase::CentredDeltaSph) &&
                      (k.viscosity == PairViscosity::None || k.viscosity == PairViscosity::Morris);
-  s.half_pair_list = terms && s.refinement_zones.empty() && s.open_boundaries.empty();
+  // on a GPU the full list stays (one thread per particle, no atomics), as LAMMPS' KOKKOS package
+  // does by default there; the half list's scatter is its per-thread copies on the host
+  s.half_pair_list = terms && s.refinement_zones.empty() && s.open_boundaries.empty() && host_backend;
 }
 
 void check_flux_scheme(const Reader& r, YAML::Node& root, const Scene& s) {

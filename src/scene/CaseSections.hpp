@@ -31,8 +31,9 @@ void check_viscosity(const Reader& r, YAML::Node& root, const Scene& s);
 // the scheme keys select one of the named flux schemes (scene/FluxSchemes.hpp)
 void check_flux_scheme(const Reader& r, YAML::Node& root, const Scene& s);
 // scheme.pair_list: half is kept where the half-list pass is built (the centred fluxes with Morris
-// viscosity or none, uniform runs without open boundaries); elsewhere the full list is used
-void resolve_pair_list(Scene& s);
+// viscosity or none, uniform runs without open boundaries) on a host backend (kernels/Fields.hpp);
+// elsewhere, and on a GPU, the full list is used
+void resolve_pair_list(Scene& s, bool host_backend);
 void read_sound_speed(const Reader& r, YAML::Node& root, Scene& s);
 void read_time(const Reader& r, YAML::Node& root, Scene& s);
 void read_parallel(const Reader& r, YAML::Node& root, Scene& s);

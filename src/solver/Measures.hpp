@@ -26,6 +26,7 @@ struct Diagnostics {
   double fluid_mass = 0;  // with open boundaries: the fluid region's (buffer layers excluded); = mass otherwise
   Vec3 momentum{0, 0, 0};
   double kinetic_energy = 0;
+  double potential_energy = 0;  // -sum m g.x (gravity), from the coordinates' origin
   double max_speed = 0;
   double rho_min = 0, rho_max = 0;
   std::int64_t outside_domain = 0;  // particles beyond a non-periodic domain face

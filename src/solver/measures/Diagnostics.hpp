@@ -25,6 +25,10 @@ Diagnostics diagnostics(const Simulation<D>& sim) {
   Kokkos::parallel_reduce("ondine::Diagnostics::kinetic_energy", Kokkos::RangePolicy<ExecSpace>(0, n),
                           KOKKOS_LAMBDA(const int i, double& s) { s += 0.5 * m(i) * norm2(load<D>(u, i)); },
                           d.kinetic_energy);
+  Vec<D> g;
+  for (int k = 0; k < D; ++k) g[k] = sim.scene().gravity[k];
+  Kokkos::parallel_reduce("ondine::Diagnostics::potential_energy", Kokkos::RangePolicy<ExecSpace>(0, n),
+                          KOKKOS_LAMBDA(const int i, double& s) { s -= m(i) * dot(g, load<D>(x, i)); }, d.potential_energy);
   double v2 = 0;
   Kokkos::parallel_reduce("ondine::Diagnostics::max_speed", Kokkos::RangePolicy<ExecSpace>(0, n),
                           KOKKOS_LAMBDA(const int i, double& mx) {
@@ -53,6 +57,11 @@ Diagnostics diagnostics(const Simulation<D>& sim) {
     f.what = D + 1;
     d.kinetic_energy = 0;
     Kokkos::parallel_reduce("ondine::Diagnostics::kinetic_energy", Kokkos::RangePolicy<ExecSpace>(0, n), f, d.kinetic_energy);
+    f.what = D + 2;
+    f.x = x;
+    f.g = g;
+    d.potential_energy = 0;
+    Kokkos::parallel_reduce("ondine::Diagnostics::potential_energy", Kokkos::RangePolicy<ExecSpace>(0, n), f, d.potential_energy);
   }
   // open boundaries: the fluid region's mass is the (leaf) mass less the buffers' (a buffer
   // particle is never refined); a buffer particle beyond the outer face is removed at the next
@@ -86,6 +95,7 @@ Diagnostics diagnostics(const Simulation<D>& sim) {
   d.fluid_mass = sim.comm().sum(d.fluid_mass);
   for (int k = 0; k < D; ++k) d.momentum[k] = sim.comm().sum(d.momentum[k]);
   d.kinetic_energy = sim.comm().sum(d.kinetic_energy);
+  d.potential_energy = sim.comm().sum(d.potential_energy);
   d.max_speed = sim.comm().max(d.max_speed);
   d.rho_min = sim.comm().min(d.rho_min);
   d.rho_max = sim.comm().max(d.rho_max);
