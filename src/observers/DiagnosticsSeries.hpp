@@ -40,6 +40,7 @@ class DiagnosticsSeries : public Observer<D> {
       if (row.size() >= c + 5) {
         keep(row[c], row[c + 2], row[c + 3], static_cast<std::int64_t>(row[c + 4]));
         if (row.size() >= c + 7) mechanical(row[c] + row[c + 6]);
+        else energy_unknown_ = true;  // a file written before the column: no E(0) to divide by
       }
   }
 
@@ -49,7 +50,7 @@ class DiagnosticsSeries : public Observer<D> {
     errors["max_kinetic_energy_ratio"] = ke_scale > 0 ? max_ke_ / ke_scale : 0.0;
     errors["max_outside_domain"] = static_cast<double>(max_outside_);
     errors["non_finite"] = end.diverged ? 1.0 : 0.0;
-    if (gravity_ && samples_ > 1 && e0_ != 0.0) errors["mechanical_energy_ratio"] = e_last_ / e0_;
+    if (gravity_ && !energy_unknown_ && samples_ > 1 && e0_ != 0.0) errors["mechanical_energy_ratio"] = e_last_ / e0_;
   }
 
  private:
@@ -65,7 +66,7 @@ class DiagnosticsSeries : public Observer<D> {
   }
 
   double rho0_, u_ref_;
-  bool gravity_;
+  bool gravity_, energy_unknown_ = false;
   double e0_ = 0, e_last_ = 0;
   long samples_ = 0;
   CsvSeries csv_;
