@@ -16,6 +16,7 @@
 #   case:NAME,FILE,ARG,...  `ondine run FILE` with these arguments (commas for spaces) (limit 150 s)
 #   run:NAME,ARG,...  SPHERIC Test 2 with these `ondine run` arguments (commas for spaces),
 #             e.g. run:dx015,--set,discretisation.dx=0.015 (limit 150 s)
+#   long:NAME,LIMIT,FILE,ARG,...  `ondine run FILE` with these arguments under LIMIT seconds
 # OUT_DIR gets log.txt, steps.json (each step's status and seconds) and results.tar.gz
 # (the runs' JSON, CSV and figures, no snapshots).
 set -u
@@ -93,6 +94,9 @@ for s in "${steps[@]}"; do
     run:*)
       IFS=, read -r -a args <<< "${s#run:}"
       step "${args[0]}" 150 "$bin/ondine" run cases/spheric_test2_3d.yaml --quiet --out "$work/runs/${args[0]}" "${args[@]:1}" ;;
+    long:*)
+      IFS=, read -r -a args <<< "${s#long:}"
+      step "${args[0]}" "${args[1]}" "$bin/ondine" run "${args[2]}" --quiet --out "$work/runs/${args[0]}" "${args[@]:3}" ;;
     *) echo "check.sh: unknown step $s" >> "$log" ;;
   esac
 done
