@@ -80,7 +80,6 @@ struct PassContext {
   LangevinConstants langevin;
   double clearance = 0;            // dx / 2 of the level: the wall-ward correction acts closer than this
   bool velocity_muscl = false;     // scheme.wall_velocity_reconstruction: the MUSCL state of u (4.30)
-  bool tensile_control = false;    // scheme.tensile_instability_control: free_surface holds this step's flags
   bool wall_state_only = false;    // wall tractions: the MUSCL state's pressure alone, no rho c u_n (wall sensors)
   // refinement zones (observers read each SPH particle with its level's radius)
   RefinementZones<D> zones;

@@ -216,7 +216,6 @@ nlohmann::json run_summary(const Scene& scene, const RunOptions& opt, const Simu
                  {"background_pressure", scene.background_pressure},
                  {"wall_velocity_reconstruction", scene.wall_velocity_reconstruction && !scene.walls.empty()},
                  {"renormalised_continuity", scene.renormalised_continuity},
-                 {"tensile_instability_control", scene.tensile_instability_control},
                  {"pair_list", scene.half_pair_list ? "half" : "full"},
                  {"time_integrator", to_string(scene.integrator)}};
   j["errors"] = report.errors;

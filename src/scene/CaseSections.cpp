@@ -127,9 +127,6 @@ static void read_flux(const Reader& r, const YAML::Node& sc, Scene& s) {
              "ale is built on Riemann-SPH (thesis 2.84-2.89 and 2.101): set scheme.flux: riemann, or use shifting with delta_sph");
     return;
   }
-  if (s.tensile_instability_control)
-    r.fail(sc["tensile_instability_control"], "scheme.tensile_instability_control",
-           "acts on the centred pressure gradient (2.48) of the delta_sph flux; with scheme.flux: riemann the pressure is the Riemann solver's: remove it");
   if (s.delta_sph > 0)
     r.fail(sc["delta_sph"], "scheme.delta_sph",
            "is the density diffusion of the delta_sph flux; with scheme.flux: riemann the Riemann solver (2.100) dissipates: remove it or set 0");
@@ -146,14 +143,12 @@ void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
     r.only_keys(sc, "scheme", {"viscous_term", "delta_sph", "artificial_viscosity", "background_pressure",
                                "time_integrator", "cfl", "shifting", "transport", "consistent_laplacian",
                                "wall_velocity_reconstruction", "renormalised_continuity", "density_gradient", "flux",
-                               "riemann", "ale", "pair_list", "tensile_instability_control"});
+                               "riemann", "ale", "pair_list"});
     if (sc["pair_list"]) s.half_pair_list = r.word(sc["pair_list"], "scheme.pair_list", {"full", "half"}) == "half";
     if (sc["renormalised_continuity"])
       s.renormalised_continuity = r.boolean(sc["renormalised_continuity"], "scheme.renormalised_continuity");
     if (sc["wall_velocity_reconstruction"])
       s.wall_velocity_reconstruction = r.boolean(sc["wall_velocity_reconstruction"], "scheme.wall_velocity_reconstruction");
-    if (sc["tensile_instability_control"])
-      s.tensile_instability_control = r.boolean(sc["tensile_instability_control"], "scheme.tensile_instability_control");
     if (sc["viscous_term"]) {
       const std::string w = r.word(sc["viscous_term"], "scheme.viscous_term", {"none", "morris", "monaghan_gingold"});
       s.viscous_term = w == "morris" ? ViscousTerm::Morris : w == "monaghan_gingold" ? ViscousTerm::MonaghanGingold : ViscousTerm::None;

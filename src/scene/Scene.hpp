@@ -244,7 +244,6 @@ struct Scene {
   bool consistent_laplacian = true;   // Morris scenes with no-slip walls: the consistent Laplacian (false: the thesis' operator)
   bool renormalised_continuity = false;  // drho/dt from the renormalised divergence (2.42-2.44, 4.86; kernels/RenormalisedContinuity.hpp)
   bool wall_velocity_reconstruction = false;  // MUSCL state of u at NFM wall points (4.30; kernels/WallVelocityState.hpp)
-  bool tensile_instability_control = false;   // free-surface particles in tension: (P_j - P_i) (kernels/terms/PressureGradient.hpp)
   TimeIntegrator integrator = TimeIntegrator::RK4;
   // the renormalised density gradient (2.42-2.44) read by delta-SPH and the MUSCL wall state:
   // false = computed at every stage of a step, true = at its first stage and held through the

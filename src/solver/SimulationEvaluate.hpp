@@ -108,7 +108,6 @@ PassContext<D> Simulation<D>::context(const LevelSpan<D>& L) const {
   }
   c.clearance = 0.5 * L.dx;
   c.velocity_muscl = scene_.wall_velocity_reconstruction;
-  c.tensile_control = scene_.tensile_instability_control;
   if (refinement_) {
     c.zones = refinement_->apr().zones();
     take(c.birth, field::AprBirthLevel{});

@@ -11,7 +11,6 @@
 #include "solver/hooks/ParticleShifting.hpp"
 #include "solver/hooks/Refinement.hpp"
 #include "solver/hooks/StartupDamping.hpp"
-#include "solver/hooks/TensileInstabilityControl.hpp"
 #include "solver/hooks/TransportVelocity.hpp"
 
 namespace ondine {
@@ -22,7 +21,6 @@ std::vector<std::unique_ptr<StepHook<D>>> make_step_hooks(const Scene& s, const 
   if (s.turbulence.on()) list.push_back(std::make_unique<EddyViscosity<D>>(s));
   if (s.ale) list.push_back(std::make_unique<TransportVelocity<D>>());
   if (s.shifting) list.push_back(std::make_unique<ParticleShifting<D>>());
-  if (s.tensile_instability_control) list.push_back(std::make_unique<TensileInstabilityControl<D>>());
   if (!s.walls.empty()) list.push_back(std::make_unique<ImpermeabilityGuard<D>>());
   if (s.damping_time > 0) list.push_back(std::make_unique<StartupDamping<D>>());
   if (!s.open_boundaries.empty()) list.push_back(std::make_unique<OpenBoundaryStep<D>>(s, restart));
