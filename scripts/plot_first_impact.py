@@ -10,19 +10,24 @@ R/dx = 2.5; apr_kleefsman_2d's uniform runs: the thesis' 2D c0 = 100 m/s, R/dx =
 adds hand runs from a perf/results JSON (perf/results/gpu-h200-20261127-first-impact.json:
 its "runs", each with P1_sensor/P1_probe peaks), drawn hollow: not recorded.
 The y axis is the P1 first-impact peak's relative error, |peak - measured| / measured
-(measured 10.8 kPa); the x axis H/dx with H = 0.55 m, the column's height.
+(measured 10.8 kPa, read from the reference series); the x axis H/dx with H = 0.55 m, the column's height.
 """
 import argparse
 import json
+import os
 import re
+import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from first_impact_table import figures, series  # noqa: E402  (the same measure as the docs' tables)
+
 H = 0.55
-MEASURED_P1 = 10.8e3
+MEASURED = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cases", "reference", "spheric_test2_kleefsman2005.csv")
 
 # (label, case names, a filter on the run, colour, marker)
 SERIES = [
@@ -46,7 +51,8 @@ def recorded(runs, names, keep):
 
 
 def extra_points(path):
-    """The hand runs of a perf/results JSON, grouped by dimension and sound speed."""
+    """The hand runs of a perf/results JSON, grouped by dimension."""
+    measured_p1 = figures(series(MEASURED, "P1"))["peak"]
     d = json.load(open(path))
     groups = {}
     for r in d.get("runs", {}).values():
@@ -57,7 +63,7 @@ def extra_points(path):
         dx = float(m.group(1))
         key = "3D" if "spheric_test2_3d" in cmd else "2D"
         s, p = r["P1_sensor"]["peak_kPa"] * 1e3, r["P1_probe"]["peak_kPa"] * 1e3
-        groups.setdefault(key, []).append((H / dx, (abs(s - MEASURED_P1) / MEASURED_P1, abs(p - MEASURED_P1) / MEASURED_P1)))
+        groups.setdefault(key, []).append((H / dx, (abs(s - measured_p1) / measured_p1, abs(p - measured_p1) / measured_p1)))
     return groups
 
 
