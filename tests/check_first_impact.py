@@ -17,7 +17,10 @@ m = table.figures(table.series(measured, "P1"))
 got = f"{m['peak'] / 1e3:.1f} at {m['t_peak']:.3f}, {m['impulse']:.0f}"
 if got != "10.8 at 0.408, 1413":
     sys.exit(f"check_first_impact.py: the measured P1 reads {got!r}, expected '10.8 at 0.408, 1413'")
-r = table.figures(table.series(os.path.join(run, "probes.csv"), "P1.pressure"))
+try:
+    r = table.figures(table.series(os.path.join(run, "probes.csv"), "P1.pressure"))
+except (OSError, KeyError, ValueError) as e:
+    sys.exit(f"check_first_impact.py: cannot read {os.path.join(run, 'probes.csv')}: {e}")
 if r is None:
     sys.exit(f"check_first_impact.py: {run}: no P1 probe samples over 0.35-0.60 s")
 err = abs(r["impulse"] - m["impulse"]) / m["impulse"]
