@@ -18,6 +18,7 @@ import argparse
 import csv
 import json
 import os
+import sys
 
 
 def series(path, key):
@@ -51,6 +52,7 @@ def main():
     m3 = figures(series(a.measured, "P3"))
     print(f"| measured | | | | | {m['peak'] / 1e3:.1f} at {m['t_peak']:.3f}, {m['impulse']:.0f} | {m['arrival']:.3f} | "
           f"{m['plateau'] / 1e3:.1f} | {m['ringing'] / 1e3:.2f} | {m3['peak'] / 1e3:.1f} |")
+    bad = 0
     for d in a.runs:
         try:
             s = json.load(open(os.path.join(d, "summary.json")))
@@ -59,14 +61,19 @@ def main():
             p3 = figures(series(os.path.join(d, "probes.csv"), "P3.pressure"))
         except (OSError, ValueError, KeyError) as e:
             print(f"| {d} | cannot read it: {e} |")
+            print(f"first_impact_table.py: {d}: cannot read it: {e}", file=sys.stderr)
+            bad += 1
             continue
         if not (ws and pr and p3):
             print(f"| {d} | no samples over 0.35-0.60 s |")
+            print(f"first_impact_table.py: {d}: no samples over 0.35-0.60 s", file=sys.stderr)
+            bad += 1
             continue
         print(f"| {d} | {s['particles']} | {s['steps']} | {s['wall_seconds']:.1f} | {ws['peak'] / 1e3:.1f} at {ws['t_peak']:.3f}, {ws['impulse']:.0f} | "
               f"{pr['peak'] / 1e3:.1f} at {pr['t_peak']:.3f}, {pr['impulse']:.0f} | {pr['arrival'] or float('nan'):.3f} | "
               f"{pr['plateau'] / 1e3:.1f} | {pr['ringing'] / 1e3:.1f} | {p3['peak'] / 1e3:.1f} |")
+    return 1 if bad else 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())
