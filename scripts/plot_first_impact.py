@@ -6,7 +6,8 @@
 Reads the recorded runs of `ondine validate` (docs/validation/validation.json): the 3D case
 file's ladder (spheric_test2_3d, fine_spheric_test2_3d, fine_spheric_test2_3d_thesis,
 fine_first_impact_3d) and the 2D ladders (fine_first_impact_2d: the 3D case's c0 = 40 m/s,
-R/dx = 2.5; apr_kleefsman_2d's uniform runs: the thesis' 2D c0 = 100 m/s, R/dx = 3). --extra
+R/dx = 2.5; apr_kleefsman_2d's uniform runs: the thesis' 2D c0 = 100 m/s, R/dx = 3), and the
+refined 2D runs of apr_first_impact_2d, placed at their finest level's H/dx (two levels: dx / 4). --extra
 adds hand runs from a perf/results JSON (perf/results/gpu-h200-20261127-first-impact.json:
 its "runs", each with P1_sensor/P1_probe peaks), drawn hollow: not recorded.
 The y axis is the P1 first-impact peak's relative error, |peak - measured| / measured
@@ -29,16 +30,18 @@ from first_impact_table import figures, series  # noqa: E402  (the same measure 
 H = 0.55
 MEASURED = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cases", "reference", "spheric_test2_kleefsman2005.csv")
 
-# (label, case names, a filter on the run, colour, marker)
+# (label, case names, a filter on the run, colour, marker[, the finest level's dx over the run's dx])
 SERIES = [
     ("3D, c0 40 m/s, R/dx 2.5", ("spheric_test2_3d", "fine_spheric_test2_3d", "fine_spheric_test2_3d_thesis", "fine_first_impact_3d"),
      lambda r: r.get("flux") == "case" and r.get("transport") == "case", "tab:red", "o"),
     ("2D, c0 40 m/s, R/dx 2.5", ("fine_first_impact_2d",), lambda r: True, "tab:blue", "s"),
     ("2D, c0 100 m/s, R/dx 3 (thesis)", ("apr_kleefsman_2d",), lambda r: r.get("variant") in ("coarse", "fine"), "tab:green", "^"),
+    ("2D, c0 40 m/s, refined: H/55 to H/220, H/110 to H/440", ("apr_first_impact_2d",),
+     lambda r: r.get("variant", "").startswith("apr"), "tab:purple", "D", 0.25),
 ]
 
 
-def recorded(runs, names, keep):
+def recorded(runs, names, keep, finest=1.0):
     pts = {}
     for r in runs:
         if r["case"] not in names or r.get("status") != "completed" or not keep(r):
@@ -46,7 +49,7 @@ def recorded(runs, names, keep):
         e = r.get("errors", {})
         if "P1_peak_relative_error" not in e:
             continue
-        pts[round(H / r["dx"], 3)] = (e["P1_peak_relative_error"], e.get("P1_probe_peak_relative_error"))
+        pts[round(H / (r["dx"] * finest), 3)] = (e["P1_peak_relative_error"], e.get("P1_probe_peak_relative_error"))
     return sorted(pts.items())
 
 
@@ -76,8 +79,8 @@ def main():
     runs = json.load(open(a.validation_json))["runs"]
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), sharey=True)
     for ax, which, title in ((axes[0], 0, "wall sensor"), (axes[1], 1, "probe")):
-        for label, names, keep, colour, marker in SERIES:
-            pts = [(x, v[which]) for x, v in recorded(runs, names, keep) if v[which] is not None]
+        for label, names, keep, colour, marker, *finest in SERIES:
+            pts = [(x, v[which]) for x, v in recorded(runs, names, keep, *finest) if v[which] is not None]
             if pts:
                 ax.plot(*zip(*pts), marker=marker, color=colour, label=label + " (recorded)")
         for path in a.extra:

@@ -114,6 +114,12 @@ const std::vector<ValidationCase>& catalogue() {
        stable({{"wall_crossings", 0.5}}),
        {"fluid.sound_speed=40", "discretisation.R_over_dx=2.5", "time.duration=0.6", "time.snapshot_every=1000000"}, {},
        first_impact_shown},
+      // The first impact refined towards the box's face (cases/spheric_test2_impact_apr_3d.yaml): dx = 0.01 m
+      // (H/55) in the tank, two levels to 0.0025 m (H/220) at the face, to 0.6 s: apr_first_impact_2d's
+      // design in 3D, a GPU's job (the group "fine")
+      {"fine_first_impact_apr_3d", "cases/spheric_test2_3d.yaml", 0.55,
+       {{0.01, true, true, "apr", "cases/spheric_test2_impact_apr_3d.yaml"}},
+       stable({{"wall_crossings", 0.5}}), {"time.duration=0.6", "time.snapshot_every=1000000"}, {}, first_impact_shown},
       // Martin & Moyce's dam break: 25 x 50 (quick), 50 x 100 and 100 x 200 particles in the column
       {"dam_break_2d", "cases/dam_break_2d.yaml", 0.05715, {{0.002286, false}, {0.001143, true}, {0.0005715, true}},
        {{"front_max_relative_error", 0.2}, {"front_speed_relative_error", 0.1}}, {}},
@@ -221,6 +227,16 @@ const std::vector<ValidationCase>& catalogue() {
         "mechanical_energy_ratio", "wall_time_over_fine", "cpu_time_over_fine", "probe_pressure_difference_vs_fine", "wall_leaks",
         "wall_corrections"},
        {"time.duration=0.6"}},
+      // The first impact (fine_first_impact_2d's c0 = 40 m/s, R/dx = 2.5, to 0.6 s) refined towards the
+      // box's face (cases/kleefsman_impact_apr_2d.yaml, two levels): the uniform coarse run (H/55), the
+      // refined run to H/220 at the face and (full level) the same zones from H/110 to H/440. The
+      // uniform H/220 run is fine_first_impact_2d's. Shown, not bounded
+      {"apr_first_impact_2d", "cases/kleefsman_2d.yaml", 0.55,
+       {{0.01, false, true, "coarse"}, {0.01, false, true, "apr", "cases/kleefsman_impact_apr_2d.yaml"},
+        {0.005, true, true, "apr_h440", "cases/kleefsman_impact_apr_2d.yaml"}},
+       stable({{"wall_crossings", 0.5}}),
+       {"fluid.sound_speed=40", "discretisation.R_over_dx=2.5", "time.duration=0.6", "time.snapshot_every=1000000"}, {},
+       first_impact_shown},
       // SPHERIC Test 2 with a refinement zone around the box obstacle (cases/spheric_test2_apr_3d.yaml):
       // coarse uniform (dx = 0.06 m), refined (0.03 m in the zone) and fine uniform (0.03 m), to
       // t = 2 s (quick: 0.6 s, the first impact), against the measured series; the APR run's CPU
