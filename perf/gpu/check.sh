@@ -12,7 +12,7 @@
 #   bench     perf/ondine_bench --quick (the pair rate)
 #   unit      the unit tests (ondine_tests "[unit]")
 #   pairbench the hand-written OpenMP pair loop on the machine's cores (the yardstick)
-#   validate:NAME  `ondine validate --case NAME --level full` (limit 150 s)
+#   validate:NAME[,LIMIT]  `ondine validate --case NAME --level full` (limit LIMIT s, default 150)
 #   case:NAME,FILE,ARG,...  `ondine run FILE` with these arguments (commas for spaces) (limit 150 s)
 #   run:NAME,ARG,...  SPHERIC Test 2 with these `ondine run` arguments (commas for spaces),
 #             e.g. run:dx015,--set,discretisation.dx=0.015 (limit 150 s)
@@ -87,7 +87,8 @@ for s in "${steps[@]}"; do
           | tee $work/runs/pairbench.jsonl"
       fi ;;
     validate:*)
-      step "${s#validate:}" 150 "$bin/ondine" validate --case "${s#validate:}" --level full --out "$work/runs/${s#validate:}" ;;
+      IFS=, read -r -a args <<< "${s#validate:}"
+      step "${args[0]}" "${args[1]:-150}" "$bin/ondine" validate --case "${args[0]}" --level full --out "$work/runs/${args[0]}" ;;
     case:*)
       IFS=, read -r -a args <<< "${s#case:}"
       step "${args[0]}" 150 "$bin/ondine" run "${args[1]}" --quiet --out "$work/runs/${args[0]}" "${args[@]:2}" ;;
