@@ -278,24 +278,50 @@ struct GuardApply {
     });
   }
 
-  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+  // The limiter: a value outside [lo - (hi - lo), hi + (hi - lo)], the sources' range widened
+  // by its own width, is an extrapolation of the fit, not a feature of the field (a
+  // quadratic fit's overshoot at a smooth extremum is a fraction of the range); it is put
+  // back into [lo, hi]. Returns true when it limited.
+  KOKKOS_INLINE_FUNCTION static bool limit(double& v, const double lo, const double hi) {
+    const double w = hi - lo;
+    if (v >= lo - w && v <= hi + w) return false;
+    v = v < lo ? lo : hi;
+    return true;
+  }
+
+  // counts the guards whose interpolated density or velocity was limited
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, std::int64_t& limited) const {
     const int first = lx.offsets(i), nn = used(i);
     if (nn == 0) return;  // a guard without sources keeps its fields
     const int j0 = lx.neighbours(first);
     const Vec<D> u0 = load<D>(u, j0);
     const double r0 = rho(j0);
-    Vec<D> ui = Vec<D>::zero(), g = Vec<D>::zero();
-    double ri = 0.0, sum = 0.0;
+    Vec<D> ui = Vec<D>::zero(), g = Vec<D>::zero(), ulo = Vec<D>::zero(), uhi = Vec<D>::zero();
+    double ri = 0.0, sum = 0.0, rlo = 0.0, rhi = 0.0;  // relative to the first source's
     for (int n = 0; n < nn; ++n) {
       const int j = lx.neighbours(first + n);
       const double v = psi(first + n, 0);
       sum += v;
-      ui += v * (load<D>(u, j) - u0);
+      const Vec<D> du = load<D>(u, j) - u0;
+      ui += v * du;
       const double dr = rho(j) - r0;
       ri += v * dr;
       for (int c = 0; c < D; ++c) g[c] += psi(first + n, 1 + c) * dr;
+      rlo = dr < rlo ? dr : rlo;
+      rhi = dr > rhi ? dr : rhi;
+      for (int c = 0; c < D; ++c) {
+        ulo[c] = du[c] < ulo[c] ? du[c] : ulo[c];
+        uhi[c] = du[c] > uhi[c] ? du[c] : uhi[c];
+      }
     }
     if (sum == 0.0) return;  // no source within the radius
+    bool limited_here = false;
+    if (limit(ri, rlo, rhi)) {
+      limited_here = true;
+      g = Vec<D>::zero();  // the fit's gradient is as unreliable as its value
+    }
+    for (int c = 0; c < D; ++c) limited_here = limit(ui[c], ulo[c], uhi[c]) || limited_here;
+    if (limited_here) ++limited;
     ui += u0;
     no_penetration(i, ui);
     store<D>(u, i, ui);

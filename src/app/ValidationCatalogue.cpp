@@ -123,6 +123,11 @@ const std::vector<ValidationCase>& catalogue() {
       {"fine_first_impact_apr_3d", "cases/spheric_test2_3d.yaml", 0.55,
        {{0.01, true, true, "apr", "cases/spheric_test2_impact_apr_3d.yaml"}},
        stable({{"wall_crossings", 0.5}}), {"time.duration=0.6", "time.snapshot_every=1000000"}, {}, first_impact_shown},
+      // The cylinder at Re = 100 (cylinder_re100_2d) at D/dx = 50: 3.2e5 particles, about 2e4 steps
+      // (a GPU's job: hours on 2 cores); the same bounds, a regression guard
+      {"fine_cylinder_re100_2d", "cases/cylinder_re100_2d.yaml", 0.1, {{0.002, true}},
+       stable({{"cd_error", 0.3}, {"cl_amplitude_error", 0.1}, {"strouhal_error", 0.1}, {"open_mass_balance", 1e-12}}),
+       {"time.duration=4.5", "reference.from=2.5"}, {}, {"cd_mean", "cd_pressure_mean", "cd_viscous_mean", "cl_amplitude", "strouhal", "shedding_periods"}},
       // Martin & Moyce's dam break: 25 x 50 (quick), 50 x 100 and 100 x 200 particles in the column
       {"dam_break_2d", "cases/dam_break_2d.yaml", 0.05715, {{0.002286, false}, {0.001143, true}, {0.0005715, true}},
        {{"front_max_relative_error", 0.2}, {"front_speed_relative_error", 0.1}}, {}},

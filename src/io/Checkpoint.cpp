@@ -30,6 +30,7 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, std::i
     f.attribute("refinement_deleted", a.deleted);
     f.attribute("refinement_families_moved", a.families_moved);
     f.attribute("refinement_guard_shifts", a.guard_shifts);
+    f.attribute("refinement_guards_limited", a.guards_limited);
     f.attribute("refinement_momentum_change", std::vector<double>(a.momentum_change, a.momentum_change + 3));
     f.attribute("refinement_momentum_scale", a.momentum_scale);
     f.attribute("refinement_zone_offset", a.offset);
@@ -87,6 +88,7 @@ CheckpointSlice read_checkpoint(const std::string& path, const Communicator& com
       a.deleted = r.attribute_int("refinement_deleted");
       a.families_moved = r.has("refinement_families_moved") ? r.attribute_int("refinement_families_moved") : 0;
       a.guard_shifts = r.has("refinement_guard_shifts") ? r.attribute_int("refinement_guard_shifts") : 0;
+      a.guards_limited = r.has("refinement_guards_limited") ? r.attribute_int("refinement_guards_limited") : 0;
       const std::vector<double> dp = r.attribute_doubles("refinement_momentum_change");
       if (dp.size() != 3) throw CheckpointError(path + ": attribute 'refinement_momentum_change' does not have 3 values");
       for (int k = 0; k < 3; ++k) a.momentum_change[k] = dp[k];

@@ -128,6 +128,12 @@ void walls(const Simulation<D>& sim, std::map<std::string, double>& e) {
   }
 }
 
+// with zones: the guard interpolations put back into their sources' range (apr::GuardApply::limit)
+template <int D>
+void refinement(const Simulation<D>& sim, std::map<std::string, double>& e) {
+  if (sim.refinement_on()) e["guards_limited"] = static_cast<double>(sim.comm().sum(sim.refinement().guards_limited()));
+}
+
 // start-up Poiseuille or Couette flow (reference.type poiseuille, couette): velocity L2 over
 // the channel and near its walls
 template <int D>
@@ -421,6 +427,7 @@ std::map<std::string, double> reference_errors(const Simulation<D>& sim) {
   errors::conservation(sim, d, e);
   errors::taylor_green(sim, d, e);
   errors::walls(sim, e);
+  errors::refinement(sim, e);
   switch (sim.scene().reference.kind) {
     case ReferenceKind::Poiseuille:
     case ReferenceKind::Couette: errors::channel(sim, e); break;

@@ -114,7 +114,6 @@ void read_refinement(const Reader& r, YAML::Node& root, Scene& s) {
         r.fail(ref["transition"], "refinement.transition",
                "expected a value in [0.5, 4] (the daughter guards must complete the fine supports: at least R_f = R_m / 2, i.e. 0.5; the thesis uses R_m, i.e. 1)");
     }
-    if (s.shifting) r.fail(ref, "refinement", "particle shifting with refinement zones is not supported");
     if (s.density_gradient_once_per_step)
       r.fail(ref, "refinement", "scheme.density_gradient: step with refinement zones is not supported (the guards' gradients are interpolated at every stage); use stage");
     if (s.flux == FluxScheme::Riemann)

@@ -70,6 +70,8 @@ class AdaptiveRefinement {
   std::int64_t deleted() const { return deleted_; }    // daughters deleted so far
   std::int64_t families_moved() const { return families_moved_; }  // moved off a wall (DaughterWallClearance)
   std::int64_t guard_shifts() const { return guard_shifts_; }  // daughter guards shifted (GuardSpacing), summed over steps
+  // guard interpolations put back into their sources' range (apr::GuardApply::limit), summed over stages
+  std::int64_t guards_limited() const { return guards_limited_; }
   double interpolation_seconds() const { return interp_seconds_; }
   // sum over all refinements of sum_f m_f u_f - m_m u_m (component a), and of m_m |u_m|
   double momentum_change(int a) const { return momentum_change_[a]; }
@@ -301,14 +303,18 @@ class AdaptiveRefinement {
     if (p.has(field::DensityGradient{})) f.grad_rho = p.get(field::DensityGradient{});
     for (int l = 0; l < levels_; ++l) {
       const int e = passive ? end_[l] : guard_end_[l];
-      if (e > active_end_[l])
-        Kokkos::parallel_for("ondine::APR::GuardInterpolation", Kokkos::RangePolicy<ExecSpace>(active_end_[l], e), f);
+      if (e > active_end_[l]) {
+        std::int64_t limited = 0;
+        Kokkos::parallel_reduce("ondine::APR::GuardInterpolation", Kokkos::RangePolicy<ExecSpace>(active_end_[l], e), f, limited);
+        guards_limited_ += limited;
+      }
     }
     Kokkos::fence();
     interp_seconds_ += timer.seconds();
   }
   // daughter guards moved by GuardSpacing (kernels/apr/GuardSpacing.hpp), counted by the caller
   void count_guard_shifts(std::int64_t moved) { guard_shifts_ += moved; }
+  void count_guards_limited(std::int64_t n) { guards_limited_ += n; }
 
   // positions moved (a new step): the shape functions are recomputed at the next interpolation
   void invalidate_weights() { weights_valid_ = false; }
@@ -376,7 +382,7 @@ private:
   Kokkos::View<int*, MemSpace> wide_saved_;  // wide_ before an output (save_wide_flags)
   Kokkos::View<int*, MemSpace> used_;  // per guard: its Lx entries within the interpolation radius (first in its row)
   bool weights_valid_ = false;
-  std::int64_t next_id_ = 0, refined_ = 0, deleted_ = 0, families_moved_ = 0, guard_shifts_ = 0;
+  std::int64_t next_id_ = 0, refined_ = 0, deleted_ = 0, families_moved_ = 0, guard_shifts_ = 0, guards_limited_ = 0;
   double interp_seconds_ = 0;
   double momentum_change_[D] = {}, momentum_scale_ = 0;
 };

@@ -2,8 +2,11 @@
 // Particle shifting (2.107)-(2.111) at the end of each step (scheme.shifting or transport:
 // shifting): the shifted state is computed into scratch views, shown to the hooks' `shifted`
 // point (the open boundaries keep their buffers there), then copied back; at most 0.02 dx
-// per step (kernels/ShiftingPass.hpp).
+// per step (kernels/ShiftingPass.hpp). With refinement zones each level's SPH particles are
+// shifted with their level's radius, spacing and list (their level's SPH particles and
+// guards), at most 0.02 dx_l; guards are not shifted here (refinement.guard_shifting).
 #include <utility>
+#include <vector>
 
 #include "solver/StepState.hpp"
 #include "solver/StepHook.hpp"
@@ -30,13 +33,21 @@ class ParticleShifting final : public StepHook<D> {
       u_ = field_view_t<field::Velocity, D>("ondine::Shifting::u", n);
       rho_ = field_view_t<field::Density, D>("ondine::Shifting::rho", n);
     }
-    const PassContext<D> c = s.context();
-    s.scheme().shifting(c, x_, u_, rho_, 0.02 * s.scene().dx);
-    s.shifted(ShiftedState<D>{c.first, c.end, x_, u_, rho_});
-    const auto range = std::make_pair(static_cast<std::size_t>(c.first), static_cast<std::size_t>(c.end));
-    Kokkos::deep_copy(Kokkos::subview(p.get(field::Position{}), range, Kokkos::ALL), Kokkos::subview(x_, range, Kokkos::ALL));
-    Kokkos::deep_copy(Kokkos::subview(p.get(field::Velocity{}), range, Kokkos::ALL), Kokkos::subview(u_, range, Kokkos::ALL));
-    Kokkos::deep_copy(Kokkos::subview(p.get(field::Density{}), range), Kokkos::subview(rho_, range));
+    // every level's shift from the state at the step's end, then applied
+    std::vector<PassContext<D>> levels;
+    for (const LevelSpan<D>& L : s.levels()) {
+      const PassContext<D> c = s.context(L);
+      if (c.end == c.first) continue;
+      s.scheme().shifting(c, x_, u_, rho_, 0.02 * L.dx);
+      levels.push_back(c);
+    }
+    for (const PassContext<D>& c : levels) {
+      s.shifted(ShiftedState<D>{c.first, c.end, x_, u_, rho_});
+      const auto range = std::make_pair(static_cast<std::size_t>(c.first), static_cast<std::size_t>(c.end));
+      Kokkos::deep_copy(Kokkos::subview(p.get(field::Position{}), range, Kokkos::ALL), Kokkos::subview(x_, range, Kokkos::ALL));
+      Kokkos::deep_copy(Kokkos::subview(p.get(field::Velocity{}), range, Kokkos::ALL), Kokkos::subview(u_, range, Kokkos::ALL));
+      Kokkos::deep_copy(Kokkos::subview(p.get(field::Density{}), range), Kokkos::subview(rho_, range));
+    }
     s.domain().halos_stale();
   }
 

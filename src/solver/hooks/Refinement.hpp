@@ -55,6 +55,7 @@ class Refinement final : public StepHook<D> {
     if (restart) {
       apr_.restore(s.particles(), s.owned(), restart->header.refinement);
       apr_.count_guard_shifts(s.comm().rank() == 0 ? restart->header.refinement.guard_shifts : 0);
+      apr_.count_guards_limited(s.comm().rank() == 0 ? restart->header.refinement.guards_limited : 0);
       s.domain().invalidate_lists();
       bookkeeping_due_ = true;
       return;

@@ -33,6 +33,7 @@ CheckpointRefinement refinement_state(const Simulation<D>& sim) {
   if (!sim.refinement_on()) return c;
   sim.refinement().save_state(c);
   c.guard_shifts = sim.comm().sum(sim.refinement().guard_shifts());  // a global count (each rank counts its own)
+  c.guards_limited = sim.comm().sum(sim.refinement().guards_limited());
   c.checksum = refinement_checksum(sim);
   return c;
 }
