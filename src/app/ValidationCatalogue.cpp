@@ -245,6 +245,17 @@ const std::vector<ValidationCase>& catalogue() {
        stable({{"wall_crossings", 0.5}}),
        first_impact_2d_sets, {},
        first_impact_shown},
+      // The cylinder at Re = 100 refined towards the body (cases/cylinder_re100_apr_2d.yaml): the
+      // channel 20 D wide (blockage 5 %) at D/dx = 12.5, D/25 over the near wake, D/50 around the
+      // body, beside the uniform D/dx = 12.5 and 25 runs of that channel (cylinder_re100_wide_2d:
+      // 8.2e4 and 3.3e5 particles). Without local time stepping every particle of the refined run
+      // takes the D/50 step: about 2.7e4 steps of 2.2e5 particles, a GPU's job (full level only)
+      {"apr_cylinder_re100_2d", "cases/cylinder_re100_wide_2d.yaml", 0.1,
+       {{0.008, true, true, "coarse"}, {0.008, true, true, "apr", "cases/cylinder_re100_apr_2d.yaml"}, {0.004, true, true, "fine"}},
+       stable({{"cd_error", 0.3}, {"cl_amplitude_error", 0.1}, {"strouhal_error", 0.1}, {"open_mass_balance", 1e-12}}),
+       {"time.duration=4.5", "reference.from=2.5"}, {},
+       {"cd_mean", "cd_pressure_mean", "cd_viscous_mean", "cl_amplitude", "strouhal", "shedding_periods", "wall_time_over_fine",
+        "cpu_time_over_fine", "guards_limited"}},
       // SPHERIC Test 2 with a refinement zone around the box obstacle (cases/spheric_test2_apr_3d.yaml):
       // coarse uniform (dx = 0.06 m), refined (0.03 m in the zone) and fine uniform (0.03 m), to
       // t = 2 s (quick: 0.6 s, the first impact), against the measured series; the APR run's CPU
