@@ -37,7 +37,7 @@ SERIES = [
     ("2D, c0 40 m/s, R/dx 2.5", ("fine_first_impact_2d",), lambda r: True, "tab:blue", "s"),
     ("2D, c0 100 m/s, R/dx 3 (thesis)", ("apr_kleefsman_2d",), lambda r: r.get("variant") in ("coarse", "fine"), "tab:green", "^"),
     ("2D, c0 40 m/s, refined: H/55 to H/220, H/110 to H/440", ("apr_first_impact_2d",),
-     lambda r: r.get("variant", "").startswith("apr"), "tab:purple", "D", 0.25),
+     lambda r: r.get("variant", "").startswith("apr") and r.get("transport") == "case", "tab:purple", "D", 0.25),
 ]
 
 
