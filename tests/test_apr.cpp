@@ -135,12 +135,32 @@ TEST_CASE("APR: a family refined next to a wall lies on the fluid side, on a fin
 }
 
 namespace {
-// RMS over the daughter guards within 0.02 m of the refined zone of |sum_j w_j grad W(x_ij, R_f)| dx_f,
-// j over the level-1 particles (SPH and guards): zero on a lattice, the pressure force
-// -(2 P / rho) of that sum's disorder once the guards become SPH particles.
+// |sum_j w_j grad W(x_ij, R_l)|^2 dx_l^2 at particle i, j over the particles of `level` (SPH
+// and guards), R_l = 3 dx_l, minimum image in the periodic box 0.6 x 0.4 m of
+// uniform_flow_scene: the kernel's consistency error, zero on a lattice.
+double consistency_error2(const HostState& h, std::size_t n, std::size_t i, int level) {
+  const double len[2] = {0.6, 0.4};
+  const double dx_l = 0.02 / (1 << level), R = 3 * dx_l;
+  double ex = 0, ey = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    if (j == i || h.birth(j) != level) continue;
+    double rx = h.x(i, 0) - h.x(j, 0), ry = h.x(i, 1) - h.x(j, 1);
+    rx -= len[0] * std::round(rx / len[0]);
+    ry -= len[1] * std::round(ry / len[1]);
+    const double r = std::hypot(rx, ry);
+    if (r >= R) continue;
+    const double q = r / R;
+    const double dW = 7.0 / (M_PI * R * R) * (-20.0 * q * std::pow(1 - q, 3)) / R;  // Wendland C2, 2D
+    ex += h.m(j) / h.rho(j) * dW * rx / r;
+    ey += h.m(j) / h.rho(j) * dW * ry / r;
+  }
+  return (ex * ex + ey * ey) * dx_l * dx_l;
+}
+
+// RMS over the daughter guards within 0.02 m of the refined zone of the consistency error:
+// the pressure force -(2 P / rho) of that sum's disorder once the guards become SPH particles.
 double guard_disorder(const Simulation<2>& sim, double zx0, double zy0, double zx1, double zy1, int* count) {
   const HostState h = host_state(sim);
-  const double dx_f = 0.01, R = 3 * dx_f;
   const std::size_t n = sim.particles().size();
   double sum = 0;
   int c = 0;
@@ -149,17 +169,23 @@ double guard_disorder(const Simulation<2>& sim, double zx0, double zy0, double z
     const double x = h.x(i, 0), y = h.x(i, 1);
     const double dxo = std::max({zx0 - x, x - zx1, 0.0}), dyo = std::max({zy0 - y, y - zy1, 0.0});
     if (std::hypot(dxo, dyo) > 0.02) continue;  // the guards that are shifted: a full fine support (layer 0.06 - R_f - dx_m / 2)
-    double ex = 0, ey = 0;
-    for (std::size_t j = 0; j < n; ++j) {
-      if (j == i || h.birth(j) != 1) continue;
-      const double rx = x - h.x(j, 0), ry = y - h.x(j, 1), r = std::hypot(rx, ry);
-      if (r >= R) continue;
-      const double q = r / R;
-      const double dW = 7.0 / (M_PI * R * R) * (-20.0 * q * std::pow(1 - q, 3)) / R;  // Wendland C2, 2D
-      ex += h.m(j) / h.rho(j) * dW * rx / r;
-      ey += h.m(j) / h.rho(j) * dW * ry / r;
-    }
-    sum += (ex * ex + ey * ey) * dx_f * dx_f;
+    sum += consistency_error2(h, n, i, 1);
+    ++c;
+  }
+  *count = c;
+  return c ? std::sqrt(sum / c) : 0.0;
+}
+
+// RMS over the SPH particles of `level` of the consistency error, which shifting (2.107)-(2.111)
+// drives down
+double level_disorder(const Simulation<2>& sim, int level, int* count) {
+  const HostState h = host_state(sim);
+  const std::size_t n = sim.particles().size();
+  double sum = 0;
+  int c = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (h.birth(i) != level || h.guard(i) != 0) continue;
+    sum += consistency_error2(h, n, i, level);
     ++c;
   }
   *count = c;
@@ -744,45 +770,11 @@ TEST_CASE("APR guard interpolation: a fit that extrapolates beyond its sources' 
   }
 }
 
-namespace {
-// RMS over the SPH particles of `level` of |sum_j V_j grad W_ij| dx_l, the j of that level
-// (SPH particles and guards) within R_l = 3 dx_l, minimum image in the periodic box: the
-// kernel's consistency error, which shifting (2.107)-(2.111) drives down; 0 on a lattice.
-double level_disorder(const Simulation<2>& sim, int level, const double (&len)[2], int* count) {
-  const HostState h = host_state(sim);
-  const double dx_l = 0.02 / (1 << level), R = 3 * dx_l;
-  const std::size_t n = sim.particles().size();
-  double sum = 0;
-  int c = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (h.birth(i) != level || h.guard(i) != 0) continue;
-    double ex = 0, ey = 0;
-    for (std::size_t j = 0; j < n; ++j) {
-      if (j == i || h.birth(j) != level) continue;
-      double rx = h.x(i, 0) - h.x(j, 0), ry = h.x(i, 1) - h.x(j, 1);
-      rx -= len[0] * std::round(rx / len[0]);
-      ry -= len[1] * std::round(ry / len[1]);
-      const double r = std::hypot(rx, ry);
-      if (r >= R) continue;
-      const double q = r / R;
-      const double dW = 7.0 / (M_PI * R * R) * (-20.0 * q * std::pow(1 - q, 3)) / R;  // Wendland C2, 2D
-      ex += h.m(j) / h.rho(j) * dW * rx / r;
-      ey += h.m(j) / h.rho(j) * dW * ry / r;
-    }
-    sum += (ex * ex + ey * ey) * dx_l * dx_l;
-    ++c;
-  }
-  *count = c;
-  return c ? std::sqrt(sum / c) : 0.0;
-}
-}  // namespace
-
 TEST_CASE("APR with particle shifting: each level's SPH particles are shifted towards a regular arrangement, mass exact", "[apr]") {
   // Fluid at rest in the periodic box with its refinement box, every particle moved by up to
   // 0.25 dx of its level; guards shifted too (refinement.guard_shifting). With scheme.shifting
   // each level's SPH particles are shifted with their level's radius and list
   // (hooks/ParticleShifting.hpp).
-  const double len[2] = {0.6, 0.4};
   auto run = [&](bool shifting, double (&before)[2], double (&after)[2], double& mass_drift) {
     Scene scene = uniform_flow_scene(0.0, true, shifting ? ", delta_sph: 0.1, shifting: true" : ", delta_sph: 0.1");
     scene.refinement_guard_shifting = true;
@@ -799,11 +791,11 @@ TEST_CASE("APR with particle shifting: each level's SPH particles are shifted to
     const double m0 = diagnostics(sim).mass;
     int c = 0;
     for (int l = 0; l < 2; ++l) {
-      before[l] = level_disorder(sim, l, len, &c);
+      before[l] = level_disorder(sim, l, &c);
       CHECK(c > 100);
     }
     for (int k = 0; k < 100; ++k) sim.step(1.0);
-    for (int l = 0; l < 2; ++l) after[l] = level_disorder(sim, l, len, &c);
+    for (int l = 0; l < 2; ++l) after[l] = level_disorder(sim, l, &c);
     mass_drift = std::abs(diagnostics(sim).mass - m0) / m0;
   };
   double b[2], a[2], bs[2], as[2], drift = 0, drift_s = 0;
