@@ -539,6 +539,23 @@ TEST_CASE("Refinement zones: bad input names the file, line and key", "[unit][ca
   CHECK(ok.refinement_zones[1].level == 2);
   CHECK(ok.refinement_zones[1].parent == 0);
   CHECK(ok.max_refinement_level() == 2);
+  // two blocks meeting at x = 0.51 m: 25.5 dx below the seam leaves pairs dx/2 apart there
+  const std::string seam_head = std::string(head).replace(head.find("fluid_blocks: [{min: [0, 0], max: [1, 0.5]}]"), 44,
+                                                           "fluid_blocks: [{min: [0, 0], max: [0.51, 0.5]}, {min: [0.51, 0], max: [1, 0.5]}]");
+  const std::string one_zone = "    - {name: z, min: [0.2, 0.1], max: [0.8, 0.45]}\n";
+  std::string seam_error;
+  try {
+    parse_case(seam_head + one_zone, "seam.yaml");
+  } catch (const CaseError& e) {
+    seam_error = e.what();
+  }
+  CHECK_THAT(seam_error, Catch::Contains("seam.yaml:5:") && Catch::Contains("key 'fluid_blocks[0]'") &&
+                             Catch::Contains("meets fluid_blocks[1] at x = 0.51 m") && Catch::Contains("it is 25.5 dx"));
+  // on the lattice (0.5 m = 25 dx) the same blocks parse
+  CHECK_NOTHROW(parse_case(std::string(head).replace(head.find("fluid_blocks: [{min: [0, 0], max: [1, 0.5]}]"), 44,
+                                                     "fluid_blocks: [{min: [0, 0], max: [0.5, 0.5]}, {min: [0.5, 0], max: [1, 0.5]}]") +
+                               one_zone,
+                           "seam.yaml"));
   CHECK_THAT(error_of("    - {name: far, min: [2, 2], max: [3, 3]}\n"),
              Catch::Contains("zones.yaml:9:") && Catch::Contains("key 'refinement.zones[0].min': the zone lies outside the domain"));
   CHECK_THAT(error_of("    - {name: a, min: [0.1, 0.1], max: [0.5, 0.4]}\n    - {name: b, min: [0.4, 0.2], max: [0.7, 0.45]}\n"),

@@ -1,5 +1,7 @@
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "scene/CaseSections.hpp"
 
@@ -100,6 +102,33 @@ void read_zones(const Reader& r, const YAML::Node& list, const std::string& path
   }
 }
 
+// Two fluid blocks that meet at a face: the lattice of the one below the face ends dx/2 from it
+// only when its extent along that axis is a whole multiple of dx (docs/case-file.md, "Lattice
+// fill"); otherwise particle pairs lie dx/2 apart at the seam, and with refinement zones their
+// daughters coincide (a non-finite state at the first step). Refused, naming the block.
+void check_block_seams(const Reader& r, YAML::Node& root, const Scene& s) {
+  const std::vector<FluidBlock>& b = s.blocks;
+  for (std::size_t i = 0; i < b.size(); ++i)
+    for (std::size_t j = 0; j < b.size(); ++j)
+      for (int k = 0; k < s.dimension; ++k) {
+        if (i == j || std::abs(b[i].box.max[k] - b[j].box.min[k]) > 1e-9 * s.dx) continue;
+        bool touch = true;  // the two faces overlap
+        for (int a = 0; a < s.dimension; ++a)
+          if (a != k) touch = touch && b[i].box.min[a] < b[j].box.max[a] && b[j].box.min[a] < b[i].box.max[a];
+        if (!touch) continue;
+        for (const std::size_t q : {i, j}) {
+          const double n = (b[q].box.max[k] - b[q].box.min[k]) / s.dx;
+          if (std::abs(n - std::round(n)) < 1e-6) continue;
+          std::ostringstream m;
+          m << "meets fluid_blocks[" << (q == i ? j : i) << "] at " << "xyz"[k] << " = " << b[i].box.max[k]
+            << " m, and with refinement zones its extent along " << "xyz"[k] << " must be a whole multiple of dx ("
+            << s.dx << " m); it is " << n << " dx, which leaves particles dx/2 apart at the seam, whose daughters coincide";
+          const std::string key = "fluid_blocks[" + std::to_string(q) + "]";
+          r.fail(root["fluid_blocks"][q], key, m.str());
+        }
+      }
+}
+
 }  // namespace
 
 // adaptive particle refinement (thesis 5.4, docs/apr.md): nested boxes, one level per depth
@@ -121,6 +150,7 @@ void read_refinement(const Reader& r, YAML::Node& root, Scene& s) {
     if (s.renormalised_continuity)
       r.fail(ref, "refinement", "scheme.renormalised_continuity with refinement zones is not supported (the per-level flux does not run it)");
     read_zones(r, r.required(ref, "refinement", "zones"), "refinement.zones", 1, -1, s);
+    check_block_seams(r, root, s);
   }
 }
 
