@@ -157,6 +157,20 @@ double consistency_error2(const HostState& h, std::size_t n, std::size_t i, int 
   return (ex * ex + ey * ey) * dx_l * dx_l;
 }
 
+// every particle of the uniform-flow scene moved by up to 0.25 dx of its level (dx_0 = 0.02 m),
+// uniformly in each axis, from the given seed
+void jitter_positions(Simulation<2>& sim, unsigned seed) {
+  auto& p = sim.particles();
+  auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Position{}));
+  auto hb = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::AprBirthLevel{}));
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> s(-1, 1);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (int k = 0; k < 2; ++k) hx(i, k) += 0.25 * 0.02 / (1 << hb(i)) * s(rng);
+  Kokkos::deep_copy(p.get(field::Position{}), hx);
+  sim.invalidate_neighbours();
+}
+
 // RMS over the daughter guards within 0.02 m of the refined zone of the consistency error:
 // the pressure force -(2 P / rho) of that sum's disorder once the guards become SPH particles.
 double guard_disorder(const Simulation<2>& sim, double zx0, double zy0, double zx1, double zy1, int* count) {
@@ -201,15 +215,7 @@ TEST_CASE("APR: daughter guards in a disordered flow are shifted towards a consi
   Scene scene = uniform_flow_scene(0.0, true, ", delta_sph: 0.1");
   scene.refinement_guard_shifting = true;
   Simulation<2> sim(scene);
-  auto& p = sim.particles();
-  auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Position{}));
-  auto hb = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::AprBirthLevel{}));
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> s(-1, 1);
-  for (std::size_t i = 0; i < p.size(); ++i)
-    for (int k = 0; k < 2; ++k) hx(i, k) += 0.25 * 0.02 / (1 << hb(i)) * s(rng);
-  Kokkos::deep_copy(p.get(field::Position{}), hx);
-  sim.invalidate_neighbours();
+  jitter_positions(sim, 11);
   int n0 = 0, n1 = 0;
   const double e0 = guard_disorder(sim, 0.2, 0.12, 0.35, 0.28, &n0);
   for (int k = 0; k < 100; ++k) sim.step(1.0);
@@ -796,15 +802,7 @@ TEST_CASE("APR with particle shifting: each level's SPH particles are shifted to
     Scene scene = uniform_flow_scene(0.0, true, shifting ? ", delta_sph: 0.1, shifting: true" : ", delta_sph: 0.1");
     scene.refinement_guard_shifting = true;
     Simulation<2> sim(scene);
-    auto& p = sim.particles();
-    auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Position{}));
-    auto hb = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::AprBirthLevel{}));
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<double> s(-1, 1);
-    for (std::size_t i = 0; i < p.size(); ++i)
-      for (int k = 0; k < 2; ++k) hx(i, k) += 0.25 * 0.02 / (1 << hb(i)) * s(rng);
-    Kokkos::deep_copy(p.get(field::Position{}), hx);
-    sim.invalidate_neighbours();
+    jitter_positions(sim, 5);
     const double m0 = diagnostics(sim).mass;
     int c = 0;
     for (int l = 0; l < 2; ++l) {
