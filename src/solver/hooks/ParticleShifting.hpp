@@ -33,17 +33,14 @@ class ParticleShifting final : public StepHook<D> {
       u_ = field_view_t<field::Velocity, D>("ondine::Shifting::u", n);
       rho_ = field_view_t<field::Density, D>("ondine::Shifting::rho", n);
     }
-    // every level's shift from the state at the step's end, then applied
-    std::vector<PassContext<D>> levels;
-    for (const LevelSpan<D>& L : s.levels()) {
-      const PassContext<D> c = s.context(L);
-      if (c.end == c.first) continue;
-      s.scheme().shifting(c, x_, u_, rho_, 0.02 * L.dx);
-      levels.push_back(c);
-    }
-    for (const PassContext<D>& c : levels) {
-      s.shifted(ShiftedState<D>{c.first, c.end, x_, u_, rho_});
-      const auto range = std::make_pair(static_cast<std::size_t>(c.first), static_cast<std::size_t>(c.end));
+    // every level's shift from the state at the step's end (each level's SPH particles), then applied
+    const std::vector<LevelSpan<D>> levels = s.levels();
+    for (const LevelSpan<D>& L : levels)
+      if (L.active_end > L.first) s.scheme().shifting(s.context(L), x_, u_, rho_, 0.02 * L.dx);
+    for (const LevelSpan<D>& L : levels) {
+      if (L.active_end == L.first) continue;
+      s.shifted(ShiftedState<D>{L.first, L.active_end, x_, u_, rho_});
+      const auto range = std::make_pair(static_cast<std::size_t>(L.first), static_cast<std::size_t>(L.active_end));
       Kokkos::deep_copy(Kokkos::subview(p.get(field::Position{}), range, Kokkos::ALL), Kokkos::subview(x_, range, Kokkos::ALL));
       Kokkos::deep_copy(Kokkos::subview(p.get(field::Velocity{}), range, Kokkos::ALL), Kokkos::subview(u_, range, Kokkos::ALL));
       Kokkos::deep_copy(Kokkos::subview(p.get(field::Density{}), range), Kokkos::subview(rho_, range));
