@@ -27,7 +27,7 @@ packages=(build-essential cmake pkg-config dpkg-dev xz-utils
           libeigen3-dev libyaml-cpp-dev catch2
           openmpi-bin libopenmpi-dev libhdf5-openmpi-dev hdf5-tools
           libcli11-dev nlohmann-json3-dev libassimp-dev
-          python3-matplotlib python3-numpy)
+          python3-matplotlib python3-numpy python3-h5py python3-scipy)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
