@@ -128,8 +128,8 @@ const std::vector<ValidationCase>& catalogue() {
        first_impact_2d_sets, {},
        first_impact_shown},
       // The first impact refined towards the box's face (cases/spheric_test2_impact_apr_3d.yaml): dx = 0.01 m
-      // (H/55) in the tank, two levels to 0.0025 m (H/220) at the face, to 0.6 s: apr_first_impact_2d's
-      // design in 3D, a GPU's job (the group "fine")
+      // (H/55) in the tank, 0.005 m along the floor from the column's toe, 0.0025 m (H/220) at the face,
+      // to 0.6 s: apr_first_impact_2d's design in 3D, a GPU's job (the group "fine")
       {"fine_first_impact_apr_3d", "cases/spheric_test2_3d.yaml", 0.55,
        {{0.01, true, true, "apr", "cases/spheric_test2_impact_apr_3d.yaml"}},
        stable({{"wall_crossings", 0.5}}), {"time.duration=0.6", "time.snapshot_every=1000000"}, {}, first_impact_shown},
@@ -245,8 +245,9 @@ const std::vector<ValidationCase>& catalogue() {
         "wall_corrections"},
        {"time.duration=0.6"}},
       // The first impact (fine_first_impact_2d's c0 = 40 m/s, R/dx = 2.5, to 0.6 s) refined towards the
-      // box's face (cases/kleefsman_impact_apr_2d.yaml, two levels): the uniform coarse run (H/55), the
-      // refined run to H/220 at the face and (full level) the same zones from H/110 to H/440. The
+      // box's face (cases/kleefsman_impact_apr_2d.yaml: H/110 along the floor from the column's toe, H/220
+      // at the face): the uniform coarse run (H/55), the refined run and (full level) the same zones from
+      // H/110 (H/220 along the floor, H/440 at the face). The
       // uniform H/220 run is fine_first_impact_2d's. Shown, not bounded
       {"apr_first_impact_2d", "cases/kleefsman_2d.yaml", 0.55,
        {{0.01, false, true, "coarse"}, {0.01, false, true, "apr", "cases/kleefsman_impact_apr_2d.yaml"},
