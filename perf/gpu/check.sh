@@ -17,6 +17,10 @@
 #   run:NAME,ARG,...  SPHERIC Test 2 with these `ondine run` arguments (commas for spaces),
 #             e.g. run:dx015,--set,discretisation.dx=0.015 (limit 150 s)
 #   long:NAME,LIMIT,FILE,ARG,...  `ondine run FILE` with these arguments under LIMIT seconds
+#   resume:NAME,LIMIT,FILE,ARG,...  as long:, but in /tmp/ondine-gpu-keep/NAME, which a later call
+#             on the same (warm) machine keeps: stopped at LIMIT by SIGTERM (a clean stop writes a
+#             checkpoint; 60 s allowed for it), it continues from that checkpoint at the next call
+#             (`--restart`), so a run longer than one call goes over several
 # OUT_DIR gets log.txt, steps.json (each step's status and seconds) and results.tar.gz
 # (the runs' JSON, CSV and figures, no snapshots).
 set -u
@@ -48,14 +52,15 @@ record() {  # name status seconds
   first=0
   printf '  "%s": {"status": %s, "seconds": %s}' "$1" "$2" "$3" >> "$out/steps.json"
 }
+grace=5  # seconds between SIGTERM and SIGKILL at a step's limit
 step() {  # name limit command...
   local name=$1 limit=$2; shift 2
-  local left=$(( budget - ($(date +%s) - start) - 15 ))
+  local left=$(( budget - ($(date +%s) - start) - 15 - grace ))
   [ $left -lt $limit ] && limit=$left
   if [ $limit -lt 5 ]; then echo "== $name: skipped (budget)" >> "$log"; record "$name" '"skipped"' 0; return; fi
   echo "== $name (limit ${limit} s): $*" >> "$log"
   local t0=$(date +%s.%N)
-  timeout -k 5 "$limit" "$@" >> "$log" 2>&1
+  timeout -k "$grace" "$limit" "$@" >> "$log" 2>&1
   local rc=$? t1=$(date +%s.%N)
   local dt=$(awk -v a="$t0" -v b="$t1" 'BEGIN{printf "%.2f", b-a}')
   echo "== $name: exit $rc in $dt s" >> "$log"
@@ -98,6 +103,17 @@ for s in "${steps[@]}"; do
     long:*)
       IFS=, read -r -a args <<< "${s#long:}"
       step "${args[0]}" "${args[1]}" "$bin/ondine" run "${args[2]}" --quiet --out "$work/runs/${args[0]}" "${args[@]:3}" ;;
+    resume:*)
+      IFS=, read -r -a args <<< "${s#resume:}"
+      keep=/tmp/ondine-gpu-keep/${args[0]}
+      mkdir -p "$keep"
+      again=()
+      [ -f "$keep/checkpoint.h5" ] && again=(--restart "$keep/checkpoint.h5")
+      grace=60
+      step "${args[0]}" "${args[1]}" "$bin/ondine" run "${args[2]}" --quiet --out "$keep" "${args[@]:3}" "${again[@]}"
+      grace=5
+      mkdir -p "$work/runs/${args[0]}"
+      find "$keep" -maxdepth 1 -type f \( -name '*.json' -o -name '*.csv' \) -exec cp {} "$work/runs/${args[0]}/" \; ;;
     *) echo "check.sh: unknown step $s" >> "$log" ;;
   esac
 done
