@@ -109,9 +109,7 @@ for s in "${steps[@]}"; do
       mkdir -p "$keep"
       again=()
       [ -f "$keep/checkpoint.h5" ] && again=(--restart "$keep/checkpoint.h5")
-      grace=60
-      step "${args[0]}" "${args[1]}" "$bin/ondine" run "${args[2]}" --quiet --out "$keep" "${args[@]:3}" "${again[@]}"
-      grace=5
+      grace=60 step "${args[0]}" "${args[1]}" "$bin/ondine" run "${args[2]}" --quiet --out "$keep" "${args[@]:3}" "${again[@]}"
       mkdir -p "$work/runs/${args[0]}"
       find "$keep" -maxdepth 1 -type f \( -name '*.json' -o -name '*.csv' \) -exec cp {} "$work/runs/${args[0]}/" \; ;;
     *) echo "check.sh: unknown step $s" >> "$log" ;;

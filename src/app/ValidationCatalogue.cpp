@@ -34,9 +34,11 @@ const std::vector<ValidationCase>& catalogue() {
   static const std::vector<std::string> cylinder_sets = {"time.duration=4.5", "reference.from=2.5"};
   static const std::vector<std::string> cylinder_shown = {"cd_mean", "cd_pressure_mean", "cd_viscous_mean", "cl_amplitude", "strouhal",
                                                           "shedding_periods"};
-  static const std::vector<std::string> cylinder_apr_shown = {"cd_mean", "cd_pressure_mean", "cd_viscous_mean", "cl_amplitude",
-                                                              "strouhal", "shedding_periods", "wall_time_over_fine",
-                                                              "cpu_time_over_fine", "guards_limited"};
+  static const std::vector<std::string> cylinder_apr_shown = [] {  // the same, with the refined run's cost and limiter
+    std::vector<std::string> v = cylinder_shown;
+    v.insert(v.end(), {"wall_time_over_fine", "cpu_time_over_fine", "guards_limited"});
+    return v;
+  }();
   static const std::vector<ValidationCase> c = {
       // At Ma = 0.1 (the case file's c0 = 10 m/s) the weakly-compressible error, O(Ma^2), is the floor
       // of the ladder: velocity_l2 0.0171, 0.0064, 0.0078 at 25, 50, 100. The ladder runs at Ma = 0.05
