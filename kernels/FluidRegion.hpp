@@ -73,15 +73,27 @@ struct FluidRegion {
 template <int D>
 struct FluidRegionFilter {
   FluidRegion<D> region;
+  bool walls;  // false: the blocks' cuts only
   Kokkos::View<std::int64_t*, MemSpace> block_end;
   Kokkos::View<double*, MemSpace> block_clearance;  // m
+  // the blocks' half-space cuts: block b's are rows [cut_first(b), cut_first(b + 1)) of cut,
+  // each (point, normal out of the fluid)
+  Kokkos::View<int*, MemSpace> cut_first;
+  Kokkos::View<double* [6], Kokkos::LayoutRight, MemSpace> cut;
   field_view_t<field::Position, D> x;
   field_view_t<field::GlobalId, D> id;
   Kokkos::View<int*, MemSpace> keep;
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     int b = 0;
     while (b + 1 < static_cast<int>(block_end.extent(0)) && id(i) >= block_end(b)) ++b;
-    keep(i) = region.contains(load<D>(x, i), block_clearance(b)) ? 1 : 0;
+    const Vec<D> p = load<D>(x, i);
+    bool in = !walls || region.contains(p, block_clearance(b));
+    for (int c = cut_first(b); in && c < cut_first(b + 1); ++c) {
+      double side = 0;
+      for (int k = 0; k < D; ++k) side += (p[k] - cut(c, k)) * cut(c, 3 + k);
+      if (side > 0) in = false;
+    }
+    keep(i) = in ? 1 : 0;
   }
 };
 

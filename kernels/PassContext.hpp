@@ -81,6 +81,7 @@ struct PassContext {
   double clearance = 0;            // dx / 2 of the level: the wall-ward correction acts closer than this
   bool velocity_muscl = false;     // scheme.wall_velocity_reconstruction: the MUSCL state of u (4.30)
   bool wall_state_only = false;    // wall tractions: the MUSCL state's pressure alone, no rho c u_n (wall sensors)
+  bool wall_contact = false;       // scheme.wall_contact: u_n of the wall's acoustic terms times theta_q (kernels/wall/WallContact.hpp)
   // refinement zones (observers read each SPH particle with its level's radius)
   RefinementZones<D> zones;
   field_view_t<field::AprBirthLevel, D> birth;

@@ -13,7 +13,8 @@
 // (4.30)-(4.32, kernels/WallPressure.hpp); with scheme.wall_velocity_reconstruction also of u
 // (kernels/WallVelocityState.hpp), from the renormalised velocity gradient the density-gradient
 // pass gathers in its own neighbour loop (held through the step with scheme.density_gradient: step,
-// as the density's).
+// as the density's); with scheme.wall_contact u_n times the fluid's contact theta_q at the wall
+// point (kernels/wall/WallContact.hpp).
 // With Morris viscosity and no-slip walls (Consistent), the wall term carries the
 // weight s_i(x_iq) of the Laplacian exact for linear and quadratic fields
 // (kernels/ConsistentLaplacian.hpp), as the fluid pairs do.
@@ -38,6 +39,7 @@
 #include "kernels/WallPressure.hpp"
 #include "kernels/WallSet.hpp"
 #include "kernels/WallVelocityState.hpp"
+#include "kernels/wall/WallContact.hpp"
 #include "kernels/wall/WallPointData.hpp"
 
 namespace ondine {
@@ -66,6 +68,7 @@ struct WallFluxPass {
   bool velocity_muscl = false;     // scheme.wall_velocity_reconstruction: the MUSCL state of u (4.30)
   VelocityGradientRows<D> grad_u;  // <grad u>_i of that state (velocity_muscl only)
   Pack terms;
+  Kokkos::View<double*, MemSpace> contact;  // scheme.wall_contact: theta_q of each wall point (kernels/wall/WallContact.hpp); empty: 1
 
   WallFluxPass(const PassContext<D>& c, const Pack& pack)
       : wall(c.wall), wall_cells(c.wall_cells), W(c.R), R2(c.R * c.R), body(c.body), eos(c.eos), box(c.box), P_min(c.P_min),
@@ -98,6 +101,7 @@ struct WallFluxPass {
       const Vec<D> uq = load<D>(wall.u, q);
       double un = dot(ui - uq, n);
       if (velocity_muscl) un = wall_normal_velocity<D>(grad_u_i, xiq, ui, uq, n);
+      if (contact.extent(0) > 0) un *= contact(q);
       terms.point(p, WallPoint<D>{q, xiq, Wq, n, uq, un}, s);
     });
     Vec<D>& acc = s.du;

@@ -46,6 +46,7 @@ struct WallTraction {
   Kokkos::View<double*, MemSpace> c2;  // c_i^2 = eos.c2(rho_i) of each particle (ParticleSoundSpeed2), once per call
   bool state_only = false;  // the MUSCL state's pressure P_f alone, without (4.14)'s rho c u_n (wall sensors)
   VelocityGradientRows<D> grad_u = {};  // <grad u>_i of the velocity's MUSCL state (velocity_muscl only)
+  Kokkos::View<double*, MemSpace> contact = {};  // scheme.wall_contact: theta_q, as the wall flux reads it; empty: 1
 
   KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
     const Vec<D> xq = load<D>(wall.x, q), n = load<D>(wall.n_out, q), uq = load<D>(wall.u, q);
@@ -65,9 +66,10 @@ struct WallTraction {
       const double w = m(i) / rho_i * Wr;
       const double c2_i = c2(i);
       const Vec<D> ui = load<D>(u, i);
-      const double un = state_only       ? 0.0
-                        : velocity_muscl ? wall_normal_velocity<D>(grad_u.load(i), xiq, ui, uq, n)
-                                         : dot(ui - uq, n);
+      double un = state_only       ? 0.0
+                  : velocity_muscl ? wall_normal_velocity<D>(grad_u.load(i), xiq, ui, uq, n)
+                                   : dot(ui - uq, n);
+      if (contact.extent(0) > 0) un *= contact(q);
       sp += w * normal_flux_pressure<D>(rho_i, P(i), c2_i, kmath::sqrt(c2_i), load<D>(grad_rho, i), xiq, un);
       sv += (-w / fluid_side_dn<D>(xiq, n, dn_min)) * (ui - uq);
       sw += w;

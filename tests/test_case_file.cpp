@@ -124,6 +124,16 @@ TEST_CASE("Bad case files get a message naming file, line and key", "[unit][case
     CHECK_THAT(error_of(replace(good, "    velocity: [0.5, 0.0]", "    velocity: [0.5, 0.0]\n    wall_clearance: 0.6")), Contains("(0, 0.5]"));
     CHECK(error_of(replace(good, "    velocity: [0.5, 0.0]", "    velocity: [0.5, 0.0]\n    wall_clearance: 0.01")).empty());
   }
+  SECTION("block cuts") {
+    const std::string v = "    velocity: [0.5, 0.0]";
+    CHECK(error_of(replace(good, v, v + "\n    cut: [{point: [0.5, 0.0], normal: [-1.0, 1.0]}]")).empty());
+    CHECK_THAT(error_of(replace(good, v, v + "\n    cut: [{point: [0.5, 0.0], normal: [0.0, 0.0]}]")),
+               Contains("cases/box.yaml:") && Contains("fluid_blocks[0].cut[0].normal") && Contains("non-zero"));
+    CHECK_THAT(error_of(replace(good, v, v + "\n    cut: [{point: [0.5, 0.0]}]")), Contains("fluid_blocks[0].cut[0]") && Contains("normal"));
+    CHECK_THAT(error_of(replace(good, v, v + "\n    cut: []")), Contains("fluid_blocks[0].cut") && Contains("1 to 8"));
+    CHECK_THAT(error_of(replace(good, v, v + "\n    cut: [{point: [0.5, 0.0], normal: [1, 0], side: up}]")),
+               Contains("fluid_blocks[0].cut[0].side") && Contains("unknown key"));
+  }
   SECTION("negative spacing") {
     const auto m = error_of(replace(good, "dx: 0.02", "dx: -0.02"));
     CHECK_THAT(m, Contains("cases/box.yaml:13:") && Contains("discretisation.dx") && Contains("positive"));

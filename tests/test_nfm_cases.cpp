@@ -9,6 +9,7 @@
 #include "reference/References.hpp"
 #include "observers/ErrorNorms.hpp"
 #include "solver/Simulation.hpp"
+#include "solver/WallFluxDispatch.hpp"
 #include "test_helpers.hpp"
 
 using namespace ondine;
@@ -34,6 +35,48 @@ TEST_CASE("The fill leaves no particle inside a wall or closer than dx/2 to one"
   // the body's inside is empty: 1 m x 0.8 m of water less the 0.03 m^2 body, at dx = 0.02
   Simulation<2> body(load_case(src + "/cases/polygon_body_2d.yaml"));
   CHECK(body.size() == 2000 - 75);
+}
+
+TEST_CASE("A block's cuts keep the lattice points on their fluid side, with walls or without", "[nfm][fill]") {
+  // brute force: the block's lattice (k + 1/2) dx from its corner, kept where (x - p).n <= 0 for
+  // every cut; the fill must keep exactly those, wall clearance aside
+  auto expected = [](const FluidBlock& b, double dx, double clearance_x) {
+    long n = 0;
+    const long nx = std::lround((b.box.max[0] - b.box.min[0]) / dx), ny = std::lround((b.box.max[1] - b.box.min[1]) / dx);
+    for (long i = 0; i < nx; ++i)
+      for (long j = 0; j < ny; ++j) {
+        const double x = b.box.min[0] + (i + 0.5) * dx, y = b.box.min[1] + (j + 0.5) * dx;
+        bool in = x >= clearance_x;
+        for (const FluidBlock::Cut& c : b.cuts) in = in && (x - c.point[0]) * c.normal[0] + (y - c.point[1]) * c.normal[1] <= 0;
+        n += in;
+      }
+    return n;
+  };
+  auto check_sides = [](const Simulation<2>& sim) {
+    const FluidBlock& b = sim.scene().blocks.front();
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::Position{}));
+    int wrong = 0;
+    for (int i = 0; i < static_cast<int>(sim.size()); ++i)
+      for (const FluidBlock::Cut& c : b.cuts) wrong += (x(i, 0) - c.point[0]) * c.normal[0] + (x(i, 1) - c.point[1]) * c.normal[1] > 0;
+    return wrong;
+  };
+  // the triangular water column (walls: the wall x = 0, 0.05 m from the wedge's tip, and the floor)
+  Simulation<2> wedge(load_case(src + "/cases/wedge_impact_2d.yaml", {"discretisation.dx=0.25"}));
+  const FluidBlock& b = wedge.scene().blocks.front();
+  REQUIRE(b.cuts.size() == 1);
+  CHECK(std::abs(b.cuts[0].normal[0] * b.cuts[0].normal[0] + b.cuts[0].normal[1] * b.cuts[0].normal[1] - 1.0) < 1e-12);
+  CHECK(static_cast<long>(wedge.size()) == expected(b, 0.25, 0.125));
+  CHECK(check_sides(wedge) == 0);
+  // the wedge's area 20 x 15 less the triangle 15 x 15 tan(10 deg) / 2, within the staircase's dx / 2 per row
+  const double area = 20.0 * 15.0 - 0.5 * 15.0 * 15.0 * std::tan(10.0 * M_PI / 180.0);
+  CHECK(std::abs(wedge.size() * 0.25 * 0.25 - area) < 60 * 0.5 * 0.25 * 0.25);
+  // no walls (every axis periodic): the cut alone, half of the Taylor-Green box
+  Simulation<2> half(load_case(src + "/cases/taylor_green_2d.yaml",
+                               {"discretisation.dx=0.05", "fluid_blocks.0.cut=[{point: [0.5, 0.51], normal: [1.0, 1.0]}]"}));
+  CHECK(static_cast<long>(half.size()) == expected(half.scene().blocks.front(), 0.05, -1.0));
+  CHECK(half.size() > 200);
+  CHECK(half.size() < 230);
+  CHECK(check_sides(half) == 0);
 }
 
 TEST_CASE("The star's fill and crossing count: fluid beside an acute tip is fluid", "[nfm][fill]") {
@@ -262,4 +305,55 @@ TEST_CASE("Lid-driven cavity with the background-pressure correction keeps its p
   CHECK(wall_leaks(sim, 0.0) <= 4);
   CHECK(d.rho_max < 1.01);
   CHECK(d.rho_min > 0.99);
+}
+
+TEST_CASE("The wall contact theta_q: 1 under water in contact, 0 across a gap wider than R", "[nfm][wall_contact]") {
+  // a still tank: every wall point under the water sees a lattice in contact
+  {
+    Simulation<2> sim(load_case(src + "/cases/hydrostatic_tank_2d.yaml"));
+    sim.evaluate();  // the lists
+    const PassContext<2> c = sim.context(sim.levels().front());
+    auto theta = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), wall_contact<2, WendlandC2<2>>(c));
+    auto xq = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), c.wall.x);
+    const FluidBlock& b = sim.scene().blocks.front();
+    double lo = 2, hi = 0;
+    int n = 0;
+    for (int q = 0; q < static_cast<int>(theta.extent(0)); ++q)
+      if (xq(q, 1) < b.box.max[1] - sim.R()) {  // below the surface by more than R
+        lo = std::min(lo, theta(q)), hi = std::max(hi, theta(q));
+        ++n;
+      }
+    INFO(n << " wall points under water: theta in [" << lo << ", " << hi << "]");
+    CHECK(n > 20);
+    CHECK(lo > 0.95);  // the lattice's Shepard sum at the wall against the geometry's gamma, corners included
+    CHECK(hi <= 1.0);
+  }
+  // the triangular column before the impact: the wall x = 0 faces a gap 0.05 + y tan(10 deg)
+  {
+    Simulation<2> sim(load_case(src + "/cases/wedge_impact_2d.yaml", {"discretisation.dx=0.25"}));
+    sim.evaluate();
+    const PassContext<2> c = sim.context(sim.levels().front());
+    auto theta = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), wall_contact<2, WendlandC2<2>>(c));
+    auto xq = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), c.wall.x);
+    const double R = sim.R(), tb = std::tan(10.0 * M_PI / 180.0);
+    int beyond = 0, half = 0, near = 0;
+    for (int q = 0; q < static_cast<int>(theta.extent(0)); ++q) {
+      if (std::abs(xq(q, 0)) > 1e-9 || xq(q, 1) > 15.0) continue;  // the wall x = 0 beside the column
+      const double gap = 0.05 + xq(q, 1) * tb;                     // to the free surface (the particles are dx/2 further)
+      INFO("y = " << xq(q, 1) << ", gap " << gap << ", theta " << theta(q));
+      if (gap > R) {
+        CHECK(theta(q) == 0.0);
+        ++beyond;
+      } else if (gap > 0.5 * R) {
+        CHECK(theta(q) < 0.5);
+        ++half;
+      } else if (gap < 0.25 * R) {
+        CHECK(theta(q) > 0.0);
+        ++near;
+      }
+    }
+    CHECK(beyond > 10);
+    CHECK(half > 5);
+    CHECK(near >= 2);
+  }
 }

@@ -215,6 +215,7 @@ nlohmann::json run_summary(const Scene& scene, const RunOptions& opt, const Simu
                  {"artificial_viscosity", scene.artificial_viscosity},
                  {"background_pressure", scene.background_pressure},
                  {"wall_velocity_reconstruction", scene.wall_velocity_reconstruction && !scene.walls.empty()},
+                 {"wall_contact", scene.wall_contact && !scene.walls.empty()},
                  {"renormalised_continuity", scene.renormalised_continuity},
                  {"pair_list", scene.half_pair_list ? "half" : "full"},
                  {"time_integrator", to_string(scene.integrator)}};

@@ -21,10 +21,29 @@ void read_block_velocity(const Reader& r, const YAML::Node& v, const std::string
   }
 }
 
+// cut: a list of half-spaces {point, normal}; the lattice points on the normal's side of a
+// plane are dropped (a wedge, a sloping free surface)
+void read_block_cuts(const Reader& r, const YAML::Node& c, const std::string& key, int D, FluidBlock& fb) {
+  if (!c.IsSequence() || c.size() == 0 || c.size() > 8)
+    r.fail(c, key + ".cut", "expected a list of 1 to 8 half-spaces {point: [...], normal: [...]}");
+  for (std::size_t j = 0; j < c.size(); ++j) {
+    const std::string ck = key + ".cut[" + std::to_string(j) + "]";
+    r.only_keys(c[j], ck, {"point", "normal"});
+    FluidBlock::Cut cut;
+    cut.point = r.vector(r.required(c[j], ck, "point"), ck + ".point", D, " (m)");
+    cut.normal = r.vector(r.required(c[j], ck, "normal"), ck + ".normal", D, " (out of the fluid)");
+    double n2 = 0;
+    for (int k = 0; k < D; ++k) n2 += cut.normal[k] * cut.normal[k];
+    if (!(n2 > 0)) r.fail(c[j]["normal"], ck + ".normal", "expected a non-zero vector (the direction out of the fluid)");
+    for (int k = 0; k < D; ++k) cut.normal[k] /= std::sqrt(n2);
+    fb.cuts.push_back(cut);
+  }
+}
+
 // one entry of fluid_blocks, checked against the domain and the blocks before it
 FluidBlock read_fluid_block(const Reader& r, const YAML::Node& b, const std::string& key, const Scene& s) {
   const int D = s.dimension;
-  r.only_keys(b, key, {"min", "max", "velocity", "pressure", "wall_clearance"});
+  r.only_keys(b, key, {"min", "max", "velocity", "pressure", "wall_clearance", "cut"});
   FluidBlock fb;
   fb.box.min = r.vector(r.required(b, key, "min"), key + ".min", D, " (m)");
   fb.box.max = r.vector(r.required(b, key, "max"), key + ".max", D, " (m)");
@@ -51,6 +70,7 @@ FluidBlock read_fluid_block(const Reader& r, const YAML::Node& b, const std::str
       r.fail(c, key + ".wall_clearance",
              "expected a clearance in (0, 0.5] (in units of dx): the default 0.5 already keeps every lattice point at dx/2 or more");
   }
+  if (const YAML::Node c = b["cut"]) read_block_cuts(r, c, key, D, fb);
   for (std::size_t o = 0; o < s.blocks.size(); ++o) {
     bool overlap = true;
     for (int k = 0; k < D; ++k)

@@ -142,11 +142,12 @@ void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
   if (const YAML::Node sc = root["scheme"]) {
     r.only_keys(sc, "scheme", {"viscous_term", "delta_sph", "artificial_viscosity", "background_pressure",
                                "time_integrator", "cfl", "shifting", "transport", "consistent_laplacian",
-                               "wall_velocity_reconstruction", "renormalised_continuity", "density_gradient", "flux",
+                               "wall_velocity_reconstruction", "wall_contact", "renormalised_continuity", "density_gradient", "flux",
                                "riemann", "ale", "pair_list"});
     if (sc["pair_list"]) s.half_pair_list = r.word(sc["pair_list"], "scheme.pair_list", {"full", "half"}) == "half";
     if (sc["renormalised_continuity"])
       s.renormalised_continuity = r.boolean(sc["renormalised_continuity"], "scheme.renormalised_continuity");
+    if (sc["wall_contact"]) s.wall_contact = r.boolean(sc["wall_contact"], "scheme.wall_contact");
     if (sc["wall_velocity_reconstruction"])
       s.wall_velocity_reconstruction = r.boolean(sc["wall_velocity_reconstruction"], "scheme.wall_velocity_reconstruction");
     if (sc["viscous_term"]) {

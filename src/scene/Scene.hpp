@@ -68,6 +68,11 @@ struct FluidBlock {
   double tg_wavelength = 0.0;   // Taylor-Green L, m
   InitialPressure pressure_kind = InitialPressure::Zero;
   double wall_clearance = 0.5;  // in dx: lattice points closer than this to a wall are dropped
+  // half-spaces that cut the block: lattice points with (x - point) . normal > 0 are dropped
+  struct Cut {
+    Vec3 point{0, 0, 0}, normal{0, 0, 0};  // normal: unit, out of the fluid
+  };
+  std::vector<Cut> cuts;
 };
 
 // A wall of the Normal Flux Method: a polyline (2D) of segments. The stored
@@ -243,6 +248,7 @@ struct Scene {
   bool ale_tangential_cut = true;     // scheme.ale.cut_supports: tangential (kernels/OgerVelocityLaw.hpp); false: free
   bool consistent_laplacian = true;   // Morris scenes with no-slip walls: the consistent Laplacian (false: the thesis' operator)
   bool renormalised_continuity = false;  // drho/dt from the renormalised divergence (2.42-2.44, 4.86; kernels/RenormalisedContinuity.hpp)
+  bool wall_contact = false;  // the wall's acoustic terms weighted by the fluid's contact (kernels/wall/WallContact.hpp)
   bool wall_velocity_reconstruction = false;  // MUSCL state of u at NFM wall points (4.30; kernels/WallVelocityState.hpp)
   TimeIntegrator integrator = TimeIntegrator::RK4;
   // the renormalised density gradient (2.42-2.44) read by delta-SPH and the MUSCL wall state:

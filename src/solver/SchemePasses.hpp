@@ -10,6 +10,7 @@
 #include "kernels/RenormalisedContinuity.hpp"
 #include "kernels/ShiftingPass.hpp"
 #include "kernels/WallForces.hpp"
+#include "solver/WallFluxDispatch.hpp"
 #include "kernels/WaveGauge.hpp"
 #include "kernels/apr/GuardSpacing.hpp"
 #include "kernels/apr/LevelSums.hpp"
@@ -198,15 +199,20 @@ void wall_traction(const PassContext<D>& c, const Kokkos::View<double**, Kokkos:
   const int n = static_cast<int>(c.rho.extent(0));
   Kokkos::View<double*, MemSpace> c2(Kokkos::view_alloc(Kokkos::WithoutInitializing, "ondine::NFM::c2"), n);
   Kokkos::parallel_for("ondine::NFM::sound_speed", Kokkos::RangePolicy<ExecSpace>(0, n), ParticleSoundSpeed2<D>{c.eos, c.rho, c2});
-  if constexpr (Levels)
-    Kokkos::parallel_for("ondine::NFM::wall_traction", policy,
-                         WallTraction<D, K, true>{c.wall, c.cells, K(1.0), c.R * c.R, c.nu, c.rho0, 0.05 * c.R, c.box, c.x, c.u,
-                                                  c.rho, c.P, c.m, c.grad_rho, traction, c.zones, c.birth, c.guard, c.velocity_muscl, c2,
-                                                  c.wall_state_only, c.grad_u});
-  else
-    Kokkos::parallel_for("ondine::NFM::wall_traction", policy,
-                         WallTraction<D, K>{c.wall, c.cells, K(c.R), c.R * c.R, c.nu, c.rho0, 0.05 * c.R, c.box, c.x, c.u, c.rho,
-                                            c.P, c.m, c.grad_rho, traction, {}, {}, {}, c.velocity_muscl, c2, c.wall_state_only, c.grad_u});
+  const Kokkos::View<double*, MemSpace> contact =
+      (c.wall_contact && !c.wall_state_only) ? wall_contact<D, K>(c) : Kokkos::View<double*, MemSpace>();
+  if constexpr (Levels) {
+    WallTraction<D, K, true> pass{c.wall, c.cells, K(1.0), c.R * c.R, c.nu, c.rho0, 0.05 * c.R, c.box, c.x, c.u,
+                                  c.rho, c.P, c.m, c.grad_rho, traction, c.zones, c.birth, c.guard, c.velocity_muscl, c2,
+                                  c.wall_state_only, c.grad_u};
+    pass.contact = contact;
+    Kokkos::parallel_for("ondine::NFM::wall_traction", policy, pass);
+  } else {
+    WallTraction<D, K> pass{c.wall, c.cells, K(c.R), c.R * c.R, c.nu, c.rho0, 0.05 * c.R, c.box, c.x, c.u, c.rho,
+                            c.P, c.m, c.grad_rho, traction, {}, {}, {}, c.velocity_muscl, c2, c.wall_state_only, c.grad_u};
+    pass.contact = contact;
+    Kokkos::parallel_for("ondine::NFM::wall_traction", policy, pass);
+  }
 }
 
 // the guard spacing shifts of one level's guards (kernels/apr/GuardSpacing.hpp)

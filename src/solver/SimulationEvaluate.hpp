@@ -108,6 +108,7 @@ PassContext<D> Simulation<D>::context(const LevelSpan<D>& L) const {
   }
   c.clearance = 0.5 * L.dx;
   c.velocity_muscl = scene_.wall_velocity_reconstruction;
+  c.wall_contact = scene_.wall_contact;
   if (refinement_) {
     c.zones = refinement_->apr().zones();
     take(c.birth, field::AprBirthLevel{});

@@ -66,9 +66,14 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
     load_checkpoint(p_, *restart, apr_on);
   } else {
     fill_lattice(p_, scene_, lattice_first_, lattice_end);
+    bool cuts = false;
+    for (const FluidBlock& b : scene_.blocks) cuts = cuts || !b.cuts.empty();
     if (walls) {
-      remove_outside_fluid(p_, scene_, fluid_region<D>(scene_, walls_, domain_.box()), comm());
+      const FluidRegion<D> region = fluid_region<D>(scene_, walls_, domain_.box());
+      remove_outside_fluid(p_, scene_, &region, comm());
       check_wall_sides(p_, scene_, walls_, domain_.box(), R_, comm());
+    } else if (cuts) {
+      remove_outside_fluid<D>(p_, scene_, nullptr, comm());
     }
   }
   n_own_ = static_cast<int>(p_.size());

@@ -16,13 +16,26 @@
 
 namespace ondine {
 
+// theta_q of the level's wall points (kernels/wall/WallContact.hpp), from every particle of the
+// context's cell list within the level's R (with refinement zones guards and mothers count too:
+// theta is a presence, capped at 1)
+template <int D, class Kernel>
+Kokkos::View<double*, MemSpace> wall_contact(const PassContext<D>& c) {
+  const int nq = static_cast<int>(c.wall.x.extent(0));
+  Kokkos::View<double*, MemSpace> theta(Kokkos::view_alloc(Kokkos::WithoutInitializing, "ondine::NFM::wall_contact"), nq);
+  Kokkos::parallel_for("ondine::NFM::wall_contact", Kokkos::RangePolicy<ExecSpace>(0, nq),
+                       WallContactPass<D, Kernel>{c.wall, c.cells, c.facets, c.facet_cells, c.box, Kernel(c.R), c.R, c.x, c.rho, c.m, theta});
+  return theta;
+}
+
 namespace detail {
 
 template <int D, class Kernel, class... T>
 void run_wall_flux(const PassContext<D>& c) {
   using Pack = WallTerms<T...>;
-  Kokkos::parallel_for("ondine::NFM::wall_flux", Kokkos::RangePolicy<ExecSpace>(c.first, c.end),
-                       WallFluxPass<D, Kernel, Pack>(c, Pack(T::from(c)...)));
+  WallFluxPass<D, Kernel, Pack> pass(c, Pack(T::from(c)...));
+  if (c.wall_contact) pass.contact = wall_contact<D, Kernel>(c);
+  Kokkos::parallel_for("ondine::NFM::wall_flux", Kokkos::RangePolicy<ExecSpace>(c.first, c.end), pass);
 }
 
 }  // namespace detail
