@@ -11,9 +11,11 @@
 #include "observers/ErrorNorms.hpp"
 #include "reference/References.hpp"
 #include "reference/SensorSeries.hpp"
+#include "reference/WedgeImpact.hpp"
 #include "test_helpers.hpp"
 
 using namespace ondine;
+using Catch::Matchers::Contains;
 
 namespace {
 
@@ -193,4 +195,51 @@ TEST_CASE("SPHERIC Test 2 errors: peaks, their times and level RMS against a kno
   CHECK(e.at("P3_rms_error") == Approx(0.0).margin(1e-12));
   // a run that stops before 0.60 s gets no impulse
   CHECK(reference::spheric_test2_errors(measured, sim, 0.55, 0.5).count("P1_impulse_relative_error") == 0);
+}
+
+TEST_CASE("The wedge impact's reference: profile means, force coefficient and the errors of a known run", "[unit][reference]") {
+  using reference::Series;
+  // P(eta) = eta up to 2, 4 - eta up to 4, 0 beyond: C_F = 4
+  const Series profile = {{0.0, 0.0}, {2.0, 2.0}, {4.0, 0.0}, {6.0, 0.0}};
+  CHECK(reference::profile_force_coefficient(profile) == Approx(4.0).epsilon(1e-14));
+  CHECK(reference::profile_mean(profile, 1.0, 3.0) == Approx(1.5).epsilon(1e-14));
+  CHECK(reference::profile_mean(profile, 0.0, 1.0) == Approx(0.5).epsilon(1e-14));
+  CHECK(reference::profile_mean(profile, 5.0, 7.0) == Approx(0.0).margin(1e-14));  // beyond the last row: 0
+  // six faces of 1 m centred at 0.5 ... 5.5 m; U = 1 m/s, rho = 1, t0 = 0, compared over s = 0.5-1 m.
+  // The run: the reference's face means, except face 3, which reads twice the reference's peak;
+  // the force 1.2 C_F rho U^2 s; before the contact, 7 N/m
+  std::vector<reference::WedgeSensorFace> faces;
+  for (int j = 0; j < 6; ++j) faces.push_back({j + 0.5, 1.0});
+  const std::vector<double> at_1 = {0.5, 1.5, 1.5, 3.0, 0.0, 0.0};   // s = 1: face means 0.5 1.5 1.5 0.5 0 0
+  const std::vector<double> at_05 = {1.0, 1.0, 0.0, 2.0, 0.0, 0.0};  // s = 0.5: face means 1 1 0 0 0 0
+  const std::vector<reference::WedgeInstant> run = {{-0.1, 7.0, {0, 0, 0, 0, 0, 0}}, {0.25, 1.0, at_05 /* s < 0.5: left out */},
+                                                     {0.5, 1.2 * 4.0 * 0.5, at_05}, {1.0, 1.2 * 4.0, at_1}};
+  const auto e = reference::wedge_impact_errors(profile, faces, run, 1.0, 1.0, 0.0, 1.0);
+  CHECK(e.at("force_before_contact") == Approx(7.0).epsilon(1e-14));
+  CHECK(e.at("pressure_peak_ratio") == Approx(2.0).epsilon(1e-14));  // 3 / 1.5 and 2 / 1
+  CHECK(e.at("pressure_peak_relative_error") == Approx(1.0).epsilon(1e-14));
+  // the run's peak on face 3 (3.5 m), the reference's on face 1 (1.5 m, the first of two equal) at
+  // s = 1 and on face 0 (0.5 m) at s = 0.5: (2 / 1 + 3 / 0.5) / 2
+  CHECK(e.at("pressure_peak_position_error") == Approx(4.0).epsilon(1e-14));
+  // face 3 only: (3 - 0.5)^2 + (2 - 0)^2 over 12 samples, over the mean peak (1.5 + 1) / 2
+  CHECK(e.at("pressure_profile_error") == Approx(std::sqrt(10.25 / 12) / 1.25).epsilon(1e-12));
+  CHECK(e.at("force_coefficient") == Approx(4.8).epsilon(1e-14));
+  CHECK(e.at("force_coefficient_error") == Approx(0.2).epsilon(1e-12));
+}
+
+TEST_CASE("The wedge impact's profile file: read, and refused with its path when it is not one", "[unit][reference]") {
+  const std::string good = "wedge_profile_good.csv", bad = "wedge_profile_bad.csv";
+  std::ofstream(good) << "# a comment\neta,pressure\n0.0,1.0\n0.5,2.0\n";
+  std::ofstream(bad) << "eta,pressure\n0.0,1.0\n0.5,2.0\n0.5,3.0\n";
+  const reference::Series p = reference::read_wedge_profile(good);
+  REQUIRE(p.size() == 2);
+  CHECK(p[1].second == 2.0);
+  CHECK_THROWS_WITH(reference::read_wedge_profile(bad), Contains(bad) && Contains("eta increasing"));
+  CHECK_THROWS_WITH(reference::read_wedge_profile("no_such_profile.csv"), Contains("no_such_profile.csv"));
+  std::remove(good.c_str());
+  std::remove(bad.c_str());
+  // the shipped case refuses a run too short to reach s = length, and a missing profile
+  CHECK_THROWS_WITH(case_file("wedge_impact_2d.yaml", {"time.duration=0.1"}), Contains("reference.length") && Contains("s = length"));
+  CHECK_THROWS_WITH(case_file("wedge_impact_2d.yaml", {"reference.file=nowhere.csv"}),
+                    Contains("--set reference.file") && Contains("cannot open") && Contains("nowhere.csv"));
 }

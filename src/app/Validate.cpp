@@ -26,7 +26,7 @@ using validate::catalogue;
 using validate::fmt;
 using validate::group_of;
 
-// --case: no --case: the accuracy cases; stability, apr, open, fine, turbulence: that group; all: all of
+// --case: no --case: the accuracy cases; stability, apr, open, fine, turbulence, impact: that group; all: all of
 // them but the fine group (hours on a CPU, minutes on a GPU); or case names
 std::vector<const ValidationCase*> chosen_cases(const ValidateOptions& opt) {
   auto asked = [&](const std::string& n) { return std::find(opt.cases.begin(), opt.cases.end(), n) != opt.cases.end(); };
@@ -49,7 +49,7 @@ bool options_known(const ValidateOptions& opt) {
     if (!known) {
       std::string list;
       for (const ValidationCase& c : catalogue()) list += " " + c.name;
-      std::fprintf(stderr, "ondine validate: unknown case '%s'; expected all, accuracy, stability, apr, open or one of:%s\n", n.c_str(), list.c_str());
+      std::fprintf(stderr, "ondine validate: unknown case '%s'; expected all, accuracy, stability, apr, open, fine, turbulence, impact or one of:%s\n", n.c_str(), list.c_str());
       return false;
     }
   }

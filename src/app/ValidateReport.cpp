@@ -12,6 +12,7 @@
 #include "kernels/turbulence/LogLaw.hpp"
 #include "observers/ChannelReference.hpp"
 #include "reference/References.hpp"
+#include "reference/WedgeImpact.hpp"
 
 namespace ondine::validate {
 
@@ -166,6 +167,26 @@ void compare_run_with_fine(const ValidateOptions& opt, const ValidationCase& c, 
   md << "\n";
 }
 
+// the wedge impact: the wall sensors at the last output instant (wall_sensors.csv) against
+// the similarity profile's mean over each sensor's span, both over rho U^2, at eta = distance / s
+void write_wedge_profile(const Scene& s, const std::string& dir, std::ostringstream& o) {
+  const auto rows = reference::read_table(dir + "/wall_sensors.csv");
+  if (rows.empty()) return;
+  const auto& last = rows.back();
+  const double U = s.reference.velocity, P0 = s.rho0 * U * U, sv = U * (last[0] - s.reference.from);
+  if (!(sv > 0) || last.size() < 2 + s.wall_sensors.size()) return;
+  const auto profile = reference::read_wedge_profile(s.reference.file);
+  o << "eta,p,p_exact,s\n";
+  for (std::size_t j = 0; j < s.wall_sensors.size(); ++j) {
+    const WallSensor& w = s.wall_sensors[j];
+    double d2 = 0;
+    for (int k = 0; k < 2; ++k) d2 += (w.position[k] - s.reference.origin[k]) * (w.position[k] - s.reference.origin[k]);
+    const double c = std::sqrt(d2);
+    o << c / sv << "," << last[2 + j] / P0 << "," << reference::profile_mean(profile, (c - 0.5 * w.size) / sv, (c + 0.5 * w.size) / sv)
+      << "," << sv << "\n";
+  }
+}
+
 }  // namespace
 
 std::string utc_now() {
@@ -187,7 +208,8 @@ std::string fmt(double v) {
 // profile.csv of a run, the solution next to its reference for the plots: Poiseuille u(y) (the
 // open channel's at its section) and
 // hydrostatic p(z) per particle at the end, cavity centreline velocities (Ghia's points are
-// plotted from cases/reference/), Taylor-Green max speed and E_k over time against the decay.
+// plotted from cases/reference/), Taylor-Green max speed and E_k over time against the decay,
+// the wedge impact's wall sensors against the similarity profile.
 void write_profile(const Scene& s, const std::string& dir) {
   std::ostringstream o;
   o.precision(8);
@@ -199,6 +221,9 @@ void write_profile(const Scene& s, const std::string& dir) {
              kind == ReferenceKind::LogLaw || kind == ReferenceKind::Hydrostatic ||
              kind == ReferenceKind::GhiaRe100 || kind == ReferenceKind::GhiaRe1000) {
     if (!write_snapshot_profile(s, dir, o)) return;
+  } else if (kind == ReferenceKind::WedgeImpact) {
+    write_wedge_profile(s, dir, o);
+    if (o.str().empty()) return;
   } else {
     return;
   }

@@ -39,6 +39,10 @@ const std::vector<ValidationCase>& catalogue() {
     v.insert(v.end(), {"wall_time_over_fine", "cpu_time_over_fine", "guards_limited"});
     return v;
   }();
+  // the wedge against its similarity solution (reference/WedgeImpact.hpp)
+  static const std::vector<std::string> wedge_shown = {"pressure_peak_ratio", "pressure_peak_relative_error", "pressure_peak_position_error",
+                                                       "pressure_profile_error", "force_coefficient", "force_coefficient_error",
+                                                       "force_before_contact"};
   static const std::vector<ValidationCase> c = {
       // At Ma = 0.1 (the case file's c0 = 10 m/s) the weakly-compressible error, O(Ma^2), is the floor
       // of the ladder: velocity_l2 0.0171, 0.0064, 0.0078 at 25, 50, 100. The ladder runs at Ma = 0.05
@@ -279,6 +283,18 @@ const std::vector<ValidationCase>& catalogue() {
        {"H2_rms_error", "H4_rms_error", "P1_peak_relative_error", "P1_peak_time_error", "P3_peak_relative_error", "P3_peak_time_error",
         "wall_time_over_fine", "cpu_time_over_fine", "probe_pressure_difference_vs_fine"},
        {"time.duration=0.6"}},
+      // The triangular water column (thesis §5.6.2.1, `--case impact`): a wedge of water, its free
+      // surface 10 degrees off the wall, driven at U = 5 m/s into it (cases/wedge_impact_2d.yaml,
+      // c0 = 700 m/s, no gravity), against the self-similar potential flow
+      // (scripts/wedge_similarity.py, cases/reference/wedge_similarity_alpha80.csv): the 48 wall
+      // sensors' peak, its position and the profile, and the wall's force coefficient, over s =
+      // 0.5-1 m. Resolution: s/dx at s = 1 m (the thesis' rungs are 40, 80 and 160 with refinement).
+      // Shown, not bounded
+      {"impact_wedge_2d", "cases/wedge_impact_2d.yaml", 1.0, {{0.1, false}, {0.05, true}},
+       stable({{"wall_crossings", 0.5}}), {"time.snapshot_every=1000000"}, {}, wedge_shown},
+      // the same with the wall's acoustic terms weighted by the fluid's contact (scheme.wall_contact)
+      {"impact_wedge_2d_wall_contact", "cases/wedge_impact_2d.yaml", 1.0, {{0.1, false}, {0.05, true}},
+       stable({{"wall_crossings", 0.5}}), {"time.snapshot_every=1000000", "scheme.wall_contact=true"}, {}, wedge_shown},
       // Open boundaries (`--case open`). The cylinder at Re = 100 (cases/cylinder_re100_2d.yaml), C_D,
       // the lift amplitude and St from the whole lift periods after 2.5 s of a 4.5 s run, against the
       // literature's means (src/reference/ForceCoefficients.hpp). Resolution: particles per diameter.
@@ -348,6 +364,7 @@ std::string group_of(const std::string& n) {
   if (n.rfind("cylinder_", 0) == 0 || n.rfind("open_", 0) == 0) return "open";
   if (n.rfind("fine_", 0) == 0) return "fine";
   if (n.rfind("turbulent_", 0) == 0) return "turbulence";
+  if (n.rfind("impact_", 0) == 0) return "impact";
   return "accuracy";
 }
 

@@ -12,7 +12,8 @@ namespace ondine::validate {
 const std::vector<ValidationCase>& catalogue();
 
 // stability (the stability suite), apr (the APR comparisons), open (open boundaries), fine
-// (SPHERIC Test 2 at fine resolution), turbulence (the turbulence models) or accuracy (the
+// (SPHERIC Test 2 at fine resolution), turbulence (the turbulence models), impact (the wedge
+// against its similarity solution) or accuracy (the
 // accuracy ladders, what validate runs without --case)
 std::string group_of(const std::string& name);
 

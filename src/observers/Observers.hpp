@@ -13,6 +13,7 @@
 #include "observers/SurgeFront.hpp"
 #include "observers/WallForceSeries.hpp"
 #include "observers/WallSensorSeries.hpp"
+#include "observers/WedgeImpact.hpp"
 #include "observers/WaveGaugeSeries.hpp"
 
 namespace ondine {
@@ -31,6 +32,7 @@ std::vector<std::unique_ptr<Observer<D>>> make_observers(const Scene& s, const s
   if (!s.wave_gauges.empty()) list.push_back(std::make_unique<WaveGaugeSeries<D>>(s, out, writer));
   if (ref == ReferenceKind::Cylinder) list.push_back(std::make_unique<ForceCoefficientObserver<D>>(s));
   if (ref == ReferenceKind::SphericTest2) list.push_back(std::make_unique<SphericTest2Sensors<D>>(s));
+  if (ref == ReferenceKind::WedgeImpact) list.push_back(std::make_unique<WedgeImpactObserver<D>>(s));
   list.push_back(std::make_unique<ReferenceFigures<D>>());
   return list;
 }

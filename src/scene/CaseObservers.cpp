@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "reference/SensorSeries.hpp"
+#include "reference/WedgeImpact.hpp"
 #include "scene/CaseSections.hpp"
 
 namespace ondine::case_file {
@@ -28,6 +29,32 @@ void read_spheric_reference(const Reader& r, const YAML::Node& rf, Scene& s) {
   for (const char* h : {"H2", "H4"})
     if (std::none_of(s.wave_gauges.begin(), s.wave_gauges.end(), [&](const WaveGauge& g) { return g.name == h; }))
       r.fail(rf["type"], "reference.type", std::string("spheric_test2 compares the wave gauge named ") + h + ": add it to wave_gauges");
+}
+
+// wedge_impact: the similarity profile (read now, so that a bad file stops the run before it
+// starts), U, the contact's time and point, the wall pushed, and the wall sensors along it
+void read_wedge_reference(const Reader& r, const YAML::Node& rf, Scene& s) {
+  if (s.dimension != 2) r.fail(rf["type"], "reference.type", "wedge_impact is a 2D reference");
+  const std::string rel = r.text(r.required(rf, "reference", "file"), "reference.file", "the CSV of the similarity profile (eta, pressure)");
+  s.reference.file = beside_case_file(s.source_file, rel);
+  try {
+    reference::read_wedge_profile(s.reference.file);
+  } catch (const std::exception& e) {
+    r.fail(rf["file"], "reference.file", e.what());
+  }
+  s.reference.velocity = r.positive(r.required(rf, "reference", "velocity"), "reference.velocity", " (m/s, the wedge's speed)");
+  s.reference.wall = r.text(r.required(rf, "reference", "wall"), "reference.wall", "the name of the wall the wedge hits");
+  if (std::none_of(s.walls.begin(), s.walls.end(), [&](const Wall& w) { return w.name == s.reference.wall; }))
+    r.fail(rf["wall"], "reference.wall", "no wall is named '" + s.reference.wall + "'");
+  s.reference.from = r.non_negative(r.required(rf, "reference", "from"), "reference.from", " (s, the time of the contact)");
+  if (!rf["origin"]) r.fail(rf, "reference", "wedge_impact needs origin: the contact point on the wall (m)");
+  if (s.reference.from + s.reference.length / s.reference.velocity > s.duration * (1 + 1e-12))
+    r.fail(rf["length"], "reference.length", "expected s = length to be reached: from + length / velocity <= time.duration");
+  if (s.wall_sensors.empty())
+    r.fail(rf["type"], "reference.type", "wedge_impact compares the wall sensors along the wall: add wall_sensors");
+  for (const WallSensor& w : s.wall_sensors)
+    if (std::abs(w.normal[0] - s.wall_sensors.front().normal[0]) > 1e-12 || std::abs(w.normal[1] - s.wall_sensors.front().normal[1]) > 1e-12)
+      r.fail(rf["type"], "reference.type", "wedge_impact expects every wall sensor on the one plane wall (the same normal): " + w.name + " is not");
 }
 
 // the name of a probe or gauge: it heads CSV columns, so no separators, and unique
@@ -137,8 +164,9 @@ void read_reference(const Reader& r, YAML::Node& root, Scene& s) {
     r.only_keys(rf, "reference", {"type", "length", "origin", "velocity", "file", "wall", "from", "plane"});
     const std::string t = r.word(r.required(rf, "reference", "type"), "reference.type",
                                  {"poiseuille", "couette", "hydrostatic", "martin_moyce", "ghia_re100", "ghia_re1000", "duct",
-                                  "spheric_test2", "cylinder", "open_channel", "log_law"});
-    s.reference.kind = t == "cylinder"     ? ReferenceKind::Cylinder
+                                  "spheric_test2", "cylinder", "open_channel", "log_law", "wedge_impact"});
+    s.reference.kind = t == "wedge_impact" ? ReferenceKind::WedgeImpact
+                       : t == "cylinder"     ? ReferenceKind::Cylinder
                        : t == "open_channel" ? ReferenceKind::OpenChannel
                        : t == "log_law"      ? ReferenceKind::LogLaw
                        : t == "duct"         ? ReferenceKind::Duct
@@ -154,7 +182,8 @@ void read_reference(const Reader& r, YAML::Node& root, Scene& s) {
         s.reference.kind != ReferenceKind::SphericTest2)
       r.fail(rf["type"], "reference.type", "in 3D hydrostatic, duct or spheric_test2 (the other references are 2D)");
     if (s.reference.kind == ReferenceKind::SphericTest2) read_spheric_reference(r, rf, s);
-    else if (rf["file"]) r.fail(rf["file"], "reference.file", "only a spheric_test2 reference takes a file");
+    else if (s.reference.kind == ReferenceKind::WedgeImpact) read_wedge_reference(r, rf, s);
+    else if (rf["file"]) r.fail(rf["file"], "reference.file", "only a spheric_test2 or wedge_impact reference takes a file");
     if (D != 3 && s.reference.kind == ReferenceKind::Duct) r.fail(rf["type"], "reference.type", "duct is a 3D reference");
     if (s.reference.kind == ReferenceKind::Duct && !(s.nu > 0)) r.fail(rf["type"], "reference.type", "duct needs fluid.viscosity > 0");
     if ((s.reference.kind == ReferenceKind::Poiseuille || s.reference.kind == ReferenceKind::Couette ||
@@ -169,7 +198,9 @@ void read_reference(const Reader& r, YAML::Node& root, Scene& s) {
     } else if (rf["plane"]) {
       r.fail(rf["plane"], "reference.plane", "only a log_law reference takes plane (a plane channel of half-width length)");
     }
-    if (s.reference.kind == ReferenceKind::Cylinder) {
+    if (s.reference.kind == ReferenceKind::WedgeImpact) {
+      // read by read_wedge_reference
+    } else if (s.reference.kind == ReferenceKind::Cylinder) {
       // a body in a stream: its wall, the stream's speed, the start of the averaging
       s.reference.velocity = r.positive(r.required(rf, "reference", "velocity"), "reference.velocity", " (m/s, the stream's speed)");
       s.reference.wall = r.text(r.required(rf, "reference", "wall"), "reference.wall", "the name of the body's wall");

@@ -109,7 +109,7 @@ struct Wall {
 };
 
 // The analytic or experimental reference a case is compared with (errors in summary.json).
-enum class ReferenceKind { None, Poiseuille, Couette, Hydrostatic, MartinMoyce, GhiaRe100, GhiaRe1000, Duct, SphericTest2, Cylinder, OpenChannel, LogLaw };
+enum class ReferenceKind { None, Poiseuille, Couette, Hydrostatic, MartinMoyce, GhiaRe100, GhiaRe1000, Duct, SphericTest2, Cylinder, OpenChannel, LogLaw, WedgeImpact };
 struct Reference {
   ReferenceKind kind = ReferenceKind::None;
   double length = 0;  // poiseuille: channel height L; hydrostatic: water depth H; martin_moyce: column width a; ghia: cavity side; duct: side (m)
@@ -120,7 +120,9 @@ struct Reference {
   // log_law: length = the flow depth H, origin = a point of the bed; the friction velocity
   // u_* = sqrt(F H) of the momentum balance (F: body force and gravity along x), the law of turbulence:
   // (plane: a plane channel between walls at origin and origin + 2 length, length the half-width)
-  std::string file;      // spheric_test2: the measured series (a path resolved against the case file's folder)
+  std::string file;      // spheric_test2: the measured series; wedge_impact: the similarity profile (paths resolved against the case file's folder)
+  // wedge_impact: length = s at the end of the comparison, velocity = U, origin = the contact
+  // point on the wall, wall = the wall pushed, from = t0, the contact's time (s = U (t - t0))
   // cylinder: length = D, velocity = U of the stream, the wall whose force gives C_D, C_L and St,
   // counted from time `from` (s, after the start-up)
   std::string wall;
