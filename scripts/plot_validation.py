@@ -166,6 +166,13 @@ def solution_panel(ax, out, src, case, rs):
             ax.set_xlabel("u (m/s)")
             ax.set_ylabel("y (m)")
             ax.set_title("velocity profile")
+        elif prof and "eta" in prof:
+            ax.plot(prof["eta"], prof["p"], ".-", ms=3, label=f"{lab}, s = {prof['s'][0]:.3g} m")
+            if last:
+                ax.plot(prof["eta"], prof["p_exact"], "k-", lw=1, label="similarity solution, sensor means")
+            ax.set_xlabel("distance along the wall / s")
+            ax.set_ylabel("p / (rho U^2)")
+            ax.set_title("wall pressure at the last output")
         elif prof and "p_exact" in prof:
             ax.plot(prof["p"], prof["z"], ".", ms=2, label=lab)
             if last:
@@ -174,13 +181,6 @@ def solution_panel(ax, out, src, case, rs):
             ax.set_xlabel("p (Pa)")
             ax.set_ylabel("z (m)")
             ax.set_title("hydrostatic pressure")
-        elif prof and "eta" in prof:
-            ax.plot(prof["eta"], prof["p"], ".-", ms=3, label=f"{lab}, s = {prof['s'][0]:.3g} m")
-            if last:
-                ax.plot(prof["eta"], prof["p_exact"], "k-", lw=1, label="similarity solution, sensor means")
-            ax.set_xlabel("distance along the wall / s")
-            ax.set_ylabel("p / (rho U^2)")
-            ax.set_title("wall pressure at the last output")
         elif prof and "kinetic_energy_exact" in prof:
             ax.semilogy(prof["t"], prof["max_speed"], "-", label=lab + " max speed")
             if last:

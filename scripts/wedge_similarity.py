@@ -48,7 +48,7 @@ SW = np.tile(GW, 24) / 24.0
 class Geometry:
     """Angles, far radius and node spacing of one problem."""
 
-    def __init__(self, theta_b, theta_f, radius, h0, growth, lam_cut):
+    def __init__(self, theta_b, theta_f, radius, h0, growth, lam_cut, jet_relaxation=1.0):
         self.tb = math.radians(theta_b)
         self.tf = math.radians(theta_f)
         self.t_body = np.array([math.cos(self.tb), math.sin(self.tb)])
@@ -57,6 +57,7 @@ class Geometry:
         self.h0 = h0
         self.growth = growth
         self.lam_cut = lam_cut
+        self.jet_relaxation = jet_relaxation
         self.frozen = radius / 3.0
 
     def surface_point(self, r):
@@ -291,7 +292,8 @@ class State:
     def attach_film(self, film):
         """From the contact-point state: a film of thickness `film` from the contact up to the
         jet's cut, in ballistic motion (velocity xi) from the contact's potential: F = F_E +
-        (lambda^2 - lambda_E^2) / 2, which relaxes to the jet's steady F = |xi|^2 / 2 as e^-tau."""
+        (lambda^2 - lambda_E^2) / 2, which relaxes to the jet's steady F = |xi|^2 / 2 (pressure
+        zero): as e^-tau, and faster along the jet with `jet_relaxation` (State.advance)."""
         geo = self.geo
         lam_e = self.xs[0] @ geo.t_body
         keep = np.linalg.norm(self.xs - self.xs[0], axis=1) > 3.0 * film
@@ -433,11 +435,23 @@ class State:
         dx1, dF1, lam, p, vel = self.rates()
         rate = np.linalg.norm(np.diff(dx1, axis=0), axis=1) / np.linalg.norm(np.diff(x0, axis=0), axis=1)
         dtau = np.full((len(x0), 1), min(dtau_max, courant / max(rate.max(), 1e-12)))
+        if self.cut and geo.jet_relaxation > 1.0:
+            # the jet's markers, from the cut back to one unit past the peak: their potential
+            # relaxes faster (a local pseudo-time for F alone), the ramp keeping F smooth
+            lam_a = self.lam_peak + 1.0
+            along = x0 @ geo.t_body
+            past = np.nonzero(along <= lam_a)[0]
+            m = past[0] if len(past) else 0
+            ramp = np.clip((along[:m] - lam_a) / (geo.lam_cut - lam_a), 0.0, 1.0)
+            relax = np.ones(len(x0))
+            relax[:m] = 1.0 + (geo.jet_relaxation - 1.0) * ramp
+        else:
+            relax = np.ones(len(x0))
         frozen = np.linalg.norm(x0, axis=1) > geo.frozen
         dx1[frozen] = 0.0
         dF1[frozen] = 0.0
         self.xs = x0 + dtau * dx1
-        self.F = F0 + dtau[:, 0] * dF1
+        self.F = F0 + relax * dtau[:, 0] * dF1
         self.constrain()
         if len(self.xs) != len(x0):
             return lam, p, vel, dtau
@@ -445,7 +459,7 @@ class State:
         dx2[frozen] = 0.0
         dF2[frozen] = 0.0
         self.xs = x0 + 0.5 * dtau * (dx1 + dx2)
-        self.F = F0 + 0.5 * dtau[:, 0] * (dF1 + dF2)
+        self.F = F0 + 0.5 * relax * dtau[:, 0] * (dF1 + dF2)
         self.constrain()
         return lam, p, vel, dtau
 
@@ -489,7 +503,7 @@ class State:
 
 def run(args):
     geo = Geometry(args.theta_body, args.theta_surface, args.radius, args.h0, args.growth,
-                   args.lam_cut)
+                   args.lam_cut, args.jet_relaxation)
     st = State(geo, args.film if args.film_after <= 0.0 else 0.0)
     tau = 0.0
     history = []
@@ -513,15 +527,20 @@ def run(args):
         st.lam_peak = lam[k]
         force = float(np.sum(0.5 * (p[1:] + p[:-1]) * np.diff(lam)))
         history.append((tau, float(p[k]), float(lam[k]), force, len(st.xs), st.cut))
+        if float(dtau.max()) < 1e-4 * args.dtau or not np.isfinite(force):
+            print(f"stopped at tau {tau:.3f}: the step fell to {float(dtau.max()):.1e} (an unstable "
+                  "surface); the last state saved is kept", flush=True)
+            return st, lam, p, history, tau, False
         if args.out and len(history) % (10 * args.every) == 0:
             save(args, st, lam, p, history, tau)
+            save(args, st, lam, p, history, tau, f"{args.out}.tau{tau:06.3f}")
         if args.verbose and len(history) % args.every == 0:
             print(f"tau {tau:7.3f} dtau {float(dtau.min()):.1e}  p_max {p[k]:9.3f} at lambda {lam[k]:7.4f}  force {force:9.3f}"
                   f"  end {st.xs[0] @ geo.t_body:7.3f} nodes {len(st.xs)} cut {st.cut}", flush=True)
-    return st, lam, p, history, tau
+    return st, lam, p, history, tau, True
 
 
-def save(args, st, lam, p, history, tau):
+def save(args, st, lam, p, history, tau, path=None):
     """The state and the body's pressure, written whole or not at all."""
     k = int(np.argmax(p))
     result = {
@@ -531,17 +550,23 @@ def save(args, st, lam, p, history, tau):
         "surface": st.xs.tolist(), "surface_potential": st.F.tolist(), "history": history,
         "parameters": vars(args),
     }
-    tmp = args.out + ".tmp"
+    path = path or args.out
+    tmp = path + ".tmp"
     with open(tmp, "w") as f:
         json.dump(result, f)
-    os.replace(tmp, args.out)
+    os.replace(tmp, path)
     return result
 
 
-def write_profile(path, res):
-    """The reference profile for `reference.type: wedge_impact` (docs/case-file.md)."""
+def write_profile(path, res, eta_max=None):
+    """The reference profile for `reference.type: wedge_impact` (docs/case-file.md), up to
+    eta_max when given: beyond it (the jet near its cut) the pressure is taken as the steady
+    jet's, zero (a profile file is zero beyond its last row)."""
     par = res["parameters"]
     lam, p = np.array(res["lambda"]), np.array(res["pressure"])
+    if eta_max is not None:
+        keep = lam <= eta_max
+        lam, p = np.append(lam[keep], eta_max + 1e-6), np.append(p[keep], 0.0)
     hist = np.array([h[:4] for h in res["history"]], dtype=float)
     last = hist[hist[:, 0] >= hist[-1, 0] - 0.5]
     lines = [
@@ -551,7 +576,10 @@ def write_profile(path, res):
         f"(gap {par['theta_body'] - par['theta_surface']} deg); h0 {par['h0']}, growth {par['growth']}, "
         f"far radius {par['radius']}, jet cut at lambda {par['lam_cut']}; pseudo-time {res['tau']:.3f}",
         f"# over the last 0.5 of pseudo-time: peak {last[:, 1].min():.4f}-{last[:, 1].max():.4f} at eta "
-        f"{last[:, 2].min():.4f}-{last[:, 2].max():.4f}, force coefficient {last[:, 3].min():.4f}-{last[:, 3].max():.4f}",
+        f"{last[:, 2].min():.4f}-{last[:, 2].max():.4f}, the whole body's force (the jet's cut zone included) "
+        f"{last[:, 3].min():.4f}-{last[:, 3].max():.4f}",
+        f"# the profile's integral (force coefficient) {np.sum(0.5 * (p[1:] + p[:-1]) * np.diff(lam)):.4f}"
+        + (f"; cut at eta {eta_max} (the jet beyond at zero pressure, its steady state)" if eta_max is not None else ""),
         "# eta: distance along the wall from the contact point over s = U t; pressure: p / (rho U^2)",
         "eta,pressure",
     ]
@@ -570,6 +598,10 @@ def main():
     ap.add_argument("--h0", type=float, default=0.02)
     ap.add_argument("--growth", type=float, default=0.12)
     ap.add_argument("--lam-cut", type=float, default=14.0)
+    ap.add_argument("--jet-relaxation", type=float, default=1.0,
+                    help="the jet's potential relaxes this many times faster at the cut, ramped from "
+                    "1 at one unit of lambda past the pressure peak (pseudo-time only: the steady state "
+                    "is the same)")
     ap.add_argument("--film", type=float, default=0.1,
                     help="thickness of the film that starts the jet (0: the cut surface alone)")
     ap.add_argument("--film-after", type=float, default=3.0,
@@ -585,6 +617,7 @@ def main():
     ap.add_argument("-v", "--verbose", action="store_true")
     ap.add_argument("--csv", help="with --export: write the body pressure of that result as a "
                     "reference profile (eta = lambda / (U t), pressure = p / (rho U^2))")
+    ap.add_argument("--eta-max", type=float, help="with --export: the profile's last eta (the jet beyond at p = 0)")
     ap.add_argument("--export", help="a result written by --out, to convert with --csv (no run)")
     ap.add_argument("--self-test", action="store_true", help="check the boundary element method and exit")
     args = ap.parse_args()
@@ -593,9 +626,11 @@ def main():
     if args.export:
         with open(args.export) as f:
             res = json.load(f)
-        write_profile(args.csv, res)
+        write_profile(args.csv, res, args.eta_max)
         return 0
-    st, lam, p, hist, tau = run(args)
+    st, lam, p, hist, tau, finished = run(args)
+    if not finished:
+        return 1
     k = int(np.argmax(p))
     if args.out:
         save(args, st, lam, p, hist, tau)
