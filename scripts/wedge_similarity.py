@@ -513,6 +513,8 @@ def run(args):
         st.xs, st.F = np.array(saved["surface"]), np.array(saved["surface_potential"])
         st.cut, st.lam_peak, tau = saved["cut"], saved["lambda_peak"], saved["tau"]
         history = [tuple(h) for h in saved["history"]]
+        if tau >= args.tau:
+            sys.exit(f"wedge_similarity.py: {args.resume} is at pseudo-time {tau:.3f}, not before --tau {args.tau}")
     st.regrid()
     attached = st.cut
     while tau < args.tau:

@@ -205,6 +205,7 @@ TEST_CASE("The wedge impact's reference: profile means, force coefficient and th
   CHECK(reference::profile_mean(profile, 1.0, 3.0) == Approx(1.5).epsilon(1e-14));
   CHECK(reference::profile_mean(profile, 0.0, 1.0) == Approx(0.5).epsilon(1e-14));
   CHECK(reference::profile_mean(profile, 5.0, 7.0) == Approx(0.0).margin(1e-14));  // beyond the last row: 0
+  CHECK(reference::profile_mean(profile, 3.0, 3.0) == Approx(1.0).epsilon(1e-14));   // a point sensor: P(3)
   // six faces of 1 m centred at 0.5 ... 5.5 m; U = 1 m/s, rho = 1, t0 = 0, compared over s = 0.5-1 m.
   // The run: the reference's face means, except face 3, which reads twice the reference's peak;
   // the force 1.2 C_F rho U^2 s; before the contact, 7 N/m

@@ -9,7 +9,9 @@ namespace ondine::reference {
 
 Series read_wedge_profile(const std::string& path) {
   if (!std::ifstream(path)) throw std::runtime_error("cannot open the similarity profile '" + path + "'");
-  Series p = read_sensor_csv(path, {"pressure"}).at("pressure");
+  const auto columns = read_sensor_csv(path, {"pressure"});
+  const auto found = columns.find("pressure");
+  const Series p = found != columns.end() ? found->second : Series{};
   if (p.size() < 2) throw std::runtime_error(path + ": expected at least two rows of (eta, pressure)");
   if (p.front().first != 0.0) throw std::runtime_error(path + ": expected the first row at eta = 0 (the contact point)");
   for (std::size_t k = 1; k < p.size(); ++k)
@@ -31,9 +33,18 @@ double profile_integral_to(const Series& p, double b) {
   return sum;
 }
 
+// the piecewise-linear profile at x (0 beyond its last row and below eta = 0)
+double profile_at(const Series& p, double x) {
+  if (x < p.front().first || x > p.back().first) return 0.0;
+  std::size_t k = 1;
+  while (k + 1 < p.size() && p[k].first < x) ++k;
+  return p[k - 1].second + (p[k].second - p[k - 1].second) * (x - p[k - 1].first) / (p[k].first - p[k - 1].first);
+}
+
 }  // namespace
 
 double profile_mean(const Series& profile, double a, double b) {
+  if (!(b - a > 1e-12)) return profile_at(profile, a);  // a point sensor
   return (profile_integral_to(profile, std::max(b, 0.0)) - profile_integral_to(profile, std::max(a, 0.0))) / (b - a);
 }
 
@@ -61,6 +72,7 @@ std::map<std::string, double> wedge_impact_errors(const Series& profile, const s
       if (ref[j] > ref_max) ref_max = ref[j], jr = j;
       if (r.pressure[j] > r.pressure[js]) js = j;
     }
+    if (!(ref_max > 0)) continue;  // every face beyond the wetted wall: no peak to compare
     for (std::size_t j = 0; j < faces.size(); ++j) squares += (r.pressure[j] - ref[j]) * (r.pressure[j] - ref[j]);
     samples += static_cast<int>(faces.size());
     ratio += r.pressure[js] / ref_max;

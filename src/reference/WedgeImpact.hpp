@@ -17,7 +17,8 @@ namespace ondine::reference {
 // increasing from 0, fewer than two rows).
 Series read_wedge_profile(const std::string& path);
 
-// The mean of the piecewise-linear profile over eta in [a, b] (0 beyond its last row).
+// The mean of the piecewise-linear profile over eta in [a, b] (0 beyond its last row); its
+// value at a when b = a (a point sensor).
 double profile_mean(const Series& profile, double a, double b);
 
 // C_F: the profile's integral over eta (trapezoid rule).
@@ -38,6 +39,7 @@ struct WedgeInstant {
 
 // The run against the similarity solution, over the instants with s = U (t - t0) in
 // [length / 2, length] (each face against the profile's mean over its own span in eta at that s):
+// (an instant whose faces all lie beyond the wetted wall, max_j P_j <= 0, is left out)
 //   pressure_peak_ratio: the mean over the instants of max_j p_j / max_j P_j rho U^2, and
 //     pressure_peak_relative_error = |pressure_peak_ratio - 1|;
 //   pressure_peak_position_error: the mean of |y_peak - y_peak,ref| / s, y the faces' centres;

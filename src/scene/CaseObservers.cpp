@@ -47,7 +47,7 @@ void read_wedge_reference(const Reader& r, const YAML::Node& rf, Scene& s) {
   if (std::none_of(s.walls.begin(), s.walls.end(), [&](const Wall& w) { return w.name == s.reference.wall; }))
     r.fail(rf["wall"], "reference.wall", "no wall is named '" + s.reference.wall + "'");
   s.reference.from = r.non_negative(r.required(rf, "reference", "from"), "reference.from", " (s, the time of the contact)");
-  if (!rf["origin"]) r.fail(rf, "reference", "wedge_impact needs origin: the contact point on the wall (m)");
+  if (!rf["origin"]) r.fail(rf, "reference.origin", "missing: wedge_impact needs the contact point on the wall (m)");
   if (s.reference.from + s.reference.length / s.reference.velocity > s.duration * (1 + 1e-12))
     r.fail(rf["length"], "reference.length", "expected s = length to be reached: from + length / velocity <= time.duration");
   if (s.wall_sensors.empty())
@@ -209,7 +209,7 @@ void read_reference(const Reader& r, YAML::Node& root, Scene& s) {
       if (rf["from"]) s.reference.from = r.non_negative(rf["from"], "reference.from", " (s)");
       if (s.reference.from >= s.duration) r.fail(rf["from"] ? rf["from"] : rf, "reference.from", "expected a time before time.duration");
     } else if (rf["wall"] || rf["from"]) {
-      r.fail(rf["wall"] ? rf["wall"] : rf["from"], "reference", "wall and from belong to a cylinder reference");
+      r.fail(rf["wall"] ? rf["wall"] : rf["from"], "reference", "wall and from belong to a cylinder or wedge_impact reference");
     } else if (s.reference.kind == ReferenceKind::OpenChannel) {
       // a channel between an inlet and an outlet: the inlet's mean speed; the section measured
       // (origin) and the pressure stations (origin.x - 1.5 H, origin.x + 0.5 H) inside the domain
@@ -224,7 +224,7 @@ void read_reference(const Reader& r, YAML::Node& root, Scene& s) {
       s.reference.velocity = r.number(r.required(rf, "reference", "velocity"), "reference.velocity",
                                       "the speed along x of the wall at y = origin + length (m/s)");
     else if (rf["velocity"] && s.reference.kind != ReferenceKind::Cylinder)
-      r.fail(rf["velocity"], "reference.velocity", "only a couette, cylinder or open_channel reference takes a velocity");
+      r.fail(rf["velocity"], "reference.velocity", "only a couette, cylinder, open_channel or wedge_impact reference takes a velocity");
   }
 }
 
