@@ -48,7 +48,7 @@ SW = np.tile(GW, 24) / 24.0
 class Geometry:
     """Angles, far radius and node spacing of one problem."""
 
-    def __init__(self, theta_b, theta_f, radius, h0, growth, lam_cut, jet_relaxation=1.0):
+    def __init__(self, theta_b, theta_f, radius, h0, growth, lam_cut):
         self.tb = math.radians(theta_b)
         self.tf = math.radians(theta_f)
         self.t_body = np.array([math.cos(self.tb), math.sin(self.tb)])
@@ -57,7 +57,6 @@ class Geometry:
         self.h0 = h0
         self.growth = growth
         self.lam_cut = lam_cut
-        self.jet_relaxation = jet_relaxation
         self.frozen = radius / 3.0
 
     def surface_point(self, r):
@@ -76,12 +75,6 @@ class Geometry:
                       [math.sin(self.tf), -math.sin(self.tb)]])
         r, lam = np.linalg.solve(a, np.array([1.0, 0.0]))
         return r, lam
-
-
-def segment_distance(p, a, b):
-    ab = b - a
-    t = np.clip(((p - a) @ ab) / (ab @ ab), 0.0, 1.0)
-    return np.linalg.norm(p - (a + t * ab))
 
 
 def polyline_distance(points, poly):
@@ -293,7 +286,7 @@ class State:
         """From the contact-point state: a film of thickness `film` from the contact up to the
         jet's cut, in ballistic motion (velocity xi) from the contact's potential: F = F_E +
         (lambda^2 - lambda_E^2) / 2, which relaxes to the jet's steady F = |xi|^2 / 2 (pressure
-        zero): as e^-tau, and faster along the jet with `jet_relaxation` (State.advance)."""
+        zero), as e^-tau."""
         geo = self.geo
         lam_e = self.xs[0] @ geo.t_body
         keep = np.linalg.norm(self.xs - self.xs[0], axis=1) > 3.0 * film
@@ -434,24 +427,12 @@ class State:
         x0, F0 = self.xs.copy(), self.F.copy()
         dx1, dF1, lam, p, vel = self.rates()
         rate = np.linalg.norm(np.diff(dx1, axis=0), axis=1) / np.linalg.norm(np.diff(x0, axis=0), axis=1)
-        dtau = np.full((len(x0), 1), min(dtau_max, courant / max(rate.max(), 1e-12)))
-        if self.cut and geo.jet_relaxation > 1.0:
-            # the jet's markers, from the cut back to one unit past the peak: their potential
-            # relaxes faster (a local pseudo-time for F alone), the ramp keeping F smooth
-            lam_a = self.lam_peak + 1.0
-            along = x0 @ geo.t_body
-            past = np.nonzero(along <= lam_a)[0]
-            m = past[0] if len(past) else 0
-            ramp = np.clip((along[:m] - lam_a) / (geo.lam_cut - lam_a), 0.0, 1.0)
-            relax = np.ones(len(x0))
-            relax[:m] = 1.0 + (geo.jet_relaxation - 1.0) * ramp
-        else:
-            relax = np.ones(len(x0))
+        dtau = min(dtau_max, courant / max(rate.max(), 1e-12))
         frozen = np.linalg.norm(x0, axis=1) > geo.frozen
         dx1[frozen] = 0.0
         dF1[frozen] = 0.0
         self.xs = x0 + dtau * dx1
-        self.F = F0 + relax * dtau[:, 0] * dF1
+        self.F = F0 + dtau * dF1
         self.constrain()
         if len(self.xs) != len(x0):
             return lam, p, vel, dtau
@@ -459,7 +440,7 @@ class State:
         dx2[frozen] = 0.0
         dF2[frozen] = 0.0
         self.xs = x0 + 0.5 * dtau * (dx1 + dx2)
-        self.F = F0 + 0.5 * relax * dtau[:, 0] * (dF1 + dF2)
+        self.F = F0 + 0.5 * dtau * (dF1 + dF2)
         self.constrain()
         return lam, p, vel, dtau
 
@@ -503,7 +484,7 @@ class State:
 
 def run(args):
     geo = Geometry(args.theta_body, args.theta_surface, args.radius, args.h0, args.growth,
-                   args.lam_cut, args.jet_relaxation)
+                   args.lam_cut)
     st = State(geo, args.film if args.film_after <= 0.0 else 0.0)
     tau = 0.0
     history = []
@@ -524,20 +505,20 @@ def run(args):
             attached = True
         lam, p, vel, dtau = st.advance(args.dtau, args.courant if st.cut else args.courant_contact)
         st.regrid()
-        tau += float(dtau.max())
+        tau += dtau
         k = int(np.argmax(p))
         st.lam_peak = lam[k]
         force = float(np.sum(0.5 * (p[1:] + p[:-1]) * np.diff(lam)))
         history.append((tau, float(p[k]), float(lam[k]), force, len(st.xs), st.cut))
-        if float(dtau.max()) < 1e-4 * args.dtau or not np.isfinite(force):
-            print(f"stopped at tau {tau:.3f}: the step fell to {float(dtau.max()):.1e} (an unstable "
+        if dtau < 1e-4 * args.dtau or not np.isfinite(force):
+            print(f"stopped at tau {tau:.3f}: the step fell to {dtau:.1e} (an unstable "
                   "surface); the last state saved is kept", flush=True)
             return st, lam, p, history, tau, False
         if args.out and len(history) % (10 * args.every) == 0:
             save(args, st, lam, p, history, tau)
             save(args, st, lam, p, history, tau, f"{args.out}.tau{tau:06.3f}")
         if args.verbose and len(history) % args.every == 0:
-            print(f"tau {tau:7.3f} dtau {float(dtau.min()):.1e}  p_max {p[k]:9.3f} at lambda {lam[k]:7.4f}  force {force:9.3f}"
+            print(f"tau {tau:7.3f} dtau {dtau:.1e}  p_max {p[k]:9.3f} at lambda {lam[k]:7.4f}  force {force:9.3f}"
                   f"  end {st.xs[0] @ geo.t_body:7.3f} nodes {len(st.xs)} cut {st.cut}", flush=True)
     return st, lam, p, history, tau, True
 
@@ -600,10 +581,6 @@ def main():
     ap.add_argument("--h0", type=float, default=0.02)
     ap.add_argument("--growth", type=float, default=0.12)
     ap.add_argument("--lam-cut", type=float, default=14.0)
-    ap.add_argument("--jet-relaxation", type=float, default=1.0,
-                    help="the jet's potential relaxes this many times faster at the cut, ramped from "
-                    "1 at one unit of lambda past the pressure peak (pseudo-time only: the steady state "
-                    "is the same)")
     ap.add_argument("--film", type=float, default=0.1,
                     help="thickness of the film that starts the jet (0: the cut surface alone)")
     ap.add_argument("--film-after", type=float, default=3.0,

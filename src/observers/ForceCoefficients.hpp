@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "observers/Observer.hpp"
+#include "observers/WallForceSeries.hpp"
 #include "reference/ForceCoefficients.hpp"
 #include "reference/References.hpp"
 
@@ -19,10 +20,7 @@ class ForceCoefficientObserver : public Observer<D> {
  public:
   explicit ForceCoefficientObserver(const Scene& scene)
       : body_(scene.reference.wall), U_(scene.reference.velocity), diameter_(scene.reference.length), rho0_(scene.rho0),
-        from_(scene.reference.from) {
-    for (std::size_t k = 0; k < scene.walls.size(); ++k)
-      if (scene.walls[k].name == body_) column_ = 2 + k * (2 * D + (D == 2 ? 1 : 3));  // its pressure_fx in walls.csv
-  }
+        from_(scene.reference.from), column_(WallForceSeries<D>::pressure_fx_column(scene, body_)) {}
 
   void record(OutputInstant<D>& now) override {
     const auto fx = now.posted.find(body_ + ".fx"), fy = now.posted.find(body_ + ".fy"), px = now.posted.find(body_ + ".pressure_fx");
@@ -64,7 +62,7 @@ class ForceCoefficientObserver : public Observer<D> {
  private:
   std::string body_;
   double U_, diameter_, rho0_, from_;
-  std::size_t column_ = 2;
+  std::size_t column_;  // the body's pressure_fx in walls.csv
   std::vector<std::array<double, 4>> force_;  // (t, F_x, F_y, the pressure part of F_x) of the body's wall
 };
 

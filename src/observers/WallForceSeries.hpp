@@ -20,6 +20,14 @@ class WallForceSeries : public SeriesObserver<D> {
     csv_.text() << "\n";
   }
 
+  // the column of a wall's pressure_fx in walls.csv (time, step, then per wall D pressure and
+  // D viscous components and its moment: 1 in 2D, 3 in 3D); 2 when no wall has that name
+  static std::size_t pressure_fx_column(const Scene& scene, const std::string& wall) {
+    for (std::size_t k = 0; k < scene.walls.size(); ++k)
+      if (scene.walls[k].name == wall) return 2 + k * (2 * D + (D == 2 ? 1 : 3));
+    return 2;
+  }
+
   void record(OutputInstant<D>& now) override {
     std::ostringstream& row = this->row(now.sim);
     for (const WallForce& f : wall_forces(now.sim)) {

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "observers/Observer.hpp"
+#include "observers/WallForceSeries.hpp"
 #include "observers/WallSensorSeries.hpp"
 #include "reference/WedgeImpact.hpp"
 
@@ -23,8 +24,7 @@ class WedgeImpactObserver : public Observer<D> {
       names_.push_back(WallSensorSeries<D>::posted_name(w.name));
     }
     for (int k = 0; k < 2; ++k) normal_[k] = scene.wall_sensors.front().normal[k];  // n_out: into the wall
-    for (std::size_t k = 0; k < scene.walls.size(); ++k)
-      if (scene.walls[k].name == wall_) force_column_ = 2 + k * (2 * D + (D == 2 ? 1 : 3));  // its pressure_fx in walls.csv
+    force_column_ = WallForceSeries<D>::pressure_fx_column(scene, wall_);
   }
 
   void record(OutputInstant<D>& now) override {
@@ -62,7 +62,7 @@ class WedgeImpactObserver : public Observer<D> {
   std::string file_, wall_;
   double U_, rho0_, t0_, length_;
   double normal_[2] = {0, 0};
-  std::size_t force_column_ = 2;
+  std::size_t force_column_ = 2;  // the wall's pressure_fx in walls.csv
   std::vector<reference::WedgeSensorFace> faces_;
   std::vector<std::string> names_;
   std::vector<reference::WedgeInstant> run_;
