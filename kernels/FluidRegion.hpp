@@ -4,6 +4,7 @@
 // winding number in 3D), not just behind a facet of an open wall, and at least `clearance` from every wall facet (dx/2 unless
 // the block's wall_clearance says otherwise). Also the impermeability
 // diagnostic: particles closer than 0.1 dx to a wall or on its solid side.
+#include "kernels/FillCuts.hpp"
 #include "kernels/WallSet.hpp"
 
 namespace ondine {
@@ -76,10 +77,7 @@ struct FluidRegionFilter {
   bool walls;  // false: the blocks' cuts only
   Kokkos::View<std::int64_t*, MemSpace> block_end;
   Kokkos::View<double*, MemSpace> block_clearance;  // m
-  // the blocks' half-space cuts: block b's are rows [cut_first(b), cut_first(b + 1)) of cut,
-  // each (point, normal out of the fluid)
-  Kokkos::View<int*, MemSpace> cut_first;
-  Kokkos::View<double* [6], Kokkos::LayoutRight, MemSpace> cut;
+  FillCuts<D> cuts;  // the blocks' half-space cuts, with their margins
   field_view_t<field::Position, D> x;
   field_view_t<field::GlobalId, D> id;
   Kokkos::View<int*, MemSpace> keep;
@@ -87,24 +85,23 @@ struct FluidRegionFilter {
     int b = 0;
     while (b + 1 < static_cast<int>(block_end.extent(0)) && id(i) >= block_end(b)) ++b;
     const Vec<D> p = load<D>(x, i);
-    bool in = !walls || region.contains(p, block_clearance(b));
-    for (int c = cut_first(b); in && c < cut_first(b + 1); ++c) {
-      double side = 0;
-      for (int k = 0; k < D; ++k) side += (p[k] - cut(c, k)) * cut(c, 3 + k);
-      if (side > 0) in = false;
-    }
+    const bool in = (!walls || region.contains(p, block_clearance(b))) && cuts.inside(b, p, true);
     keep(i) = in ? 1 : 0;
   }
 };
 
-// Counts particles that have leaked (outside the fluid region) or come closer than `near` to a wall.
+// Counts particles that have leaked (outside the fluid region) or come closer than `near` to a
+// wall; with refinement (`level` allocated) `near` is the coarse level's and a particle of birth
+// level l is held to near / 2^l.
 template <int D>
 struct WallLeakCount {
   FluidRegion<D> region;
   double near;
   field_view_t<field::Position, D> x;
+  field_view_t<field::AprBirthLevel, D> level = {};
   KOKKOS_INLINE_FUNCTION void operator()(const int i, long& c) const {
-    if (!region.contains(load<D>(x, i), near)) ++c;
+    const double d = level.extent(0) > static_cast<std::size_t>(i) ? near / static_cast<double>(1 << level(i)) : near;
+    if (!region.contains(load<D>(x, i), d)) ++c;
   }
 };
 

@@ -93,7 +93,7 @@ std::vector<std::string> scheme_sets(const ValidateOptions& opt) {
 }
 
 // The overrides of one rung: the scheme's (--flux, --transport), the case's, the quick level's,
-// and the rung's dx.
+// the rung's own, and the rung's dx.
 std::vector<std::string> rung_sets(const ValidateOptions& opt, const ValidationCase& c, const Rung& r) {
   std::vector<std::string> sets = scheme_sets(opt);
   // Riemann-SPH takes its density rate from the Riemann velocity (2.92): an entry's renormalised
@@ -101,6 +101,7 @@ std::vector<std::string> rung_sets(const ValidateOptions& opt, const ValidationC
   for (const std::string& e : c.sets)
     if (!(riemann_flux(opt) && e.rfind("scheme.renormalised_continuity=", 0) == 0)) sets.push_back(e);
   if (opt.level != "full") sets.insert(sets.end(), c.quick_sets.begin(), c.quick_sets.end());
+  sets.insert(sets.end(), r.sets.begin(), r.sets.end());
   std::ostringstream dx;
   dx.precision(17);
   dx << r.dx;

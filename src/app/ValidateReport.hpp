@@ -21,6 +21,7 @@ struct Rung {
   // run, its own case file (the uniform runs use the case's)
   std::string variant = "";
   std::string file = "";
+  std::vector<std::string> sets = {};  // this rung's own overrides, after the case's
 };
 
 // One validation case: its file, the length that defines "resolution"

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Kokkos_Sort.hpp>
@@ -15,6 +16,8 @@
 
 #include "kernels/CellList.hpp"
 #include "kernels/Permute.hpp"
+#include "kernels/FillCuts.hpp"
+#include "kernels/apr/CutTrim.hpp"
 #include "kernels/apr/GuardInterpolation.hpp"
 #include "kernels/apr/InteractionLists.hpp"
 #include "kernels/apr/Refinement.hpp"
@@ -252,6 +255,54 @@ class AdaptiveRefinement {
     for (int z = 0; z < zones_.count; ++z)
       for (int k = 0; k < D; ++k) lo_at_update_[z][k] = zones_.lo[z][k];
     return n;
+  }
+
+  // The fill at each level's own spacing (kernels/apr/CutTrim.hpp), after the first levels:
+  // from the finest level up, a particle that is not a mother and lies beyond its block's
+  // cuts goes, a mother keeps its remaining daughters' mass or goes with the last of them.
+  // Collective over `comm` (a daughter may live on another rank than its mother: the losses
+  // are gathered by mother id on every rank). Returns the new owned count (halos dropped);
+  // `removed`: the particles removed on all ranks.
+  int trim_to_cuts(ParticleSet<D>& p, int n, const Communicator& comm, const FillCuts<D>& cuts, std::int64_t& removed) {
+    Kokkos::View<int*, MemSpace> action("ondine::APR::trim_action", n);  // Keep
+    Kokkos::View<double*, MemSpace> lost("ondine::APR::trim_lost", n);
+    std::vector<double> losses;  // (mother id, mass) pairs of the level below
+    for (int l = levels_ - 1; l >= 0; --l) {
+      std::vector<double> all = comm.gather_all(losses);
+      std::vector<std::pair<std::int64_t, double>> by_mother(all.size() / 2);
+      for (std::size_t k = 0; k < by_mother.size(); ++k)
+        by_mother[k] = {static_cast<std::int64_t>(all[2 * k]), all[2 * k + 1]};
+      std::sort(by_mother.begin(), by_mother.end());
+      Kokkos::View<std::int64_t*, MemSpace> parent("ondine::APR::trim_parent", by_mother.size());
+      Kokkos::View<double*, MemSpace> mass("ondine::APR::trim_mass", by_mother.size());
+      {
+        auto hp = Kokkos::create_mirror_view(parent);
+        auto hm = Kokkos::create_mirror_view(mass);
+        for (std::size_t k = 0; k < by_mother.size(); ++k) {
+          hp(k) = by_mother[k].first;
+          hm(k) = by_mother[k].second;
+        }
+        Kokkos::deep_copy(parent, hp);
+        Kokkos::deep_copy(mass, hm);
+      }
+      Kokkos::parallel_for("ondine::APR::trim", Kokkos::RangePolicy<ExecSpace>(0, n),
+                           apr::CutTrim<D>{cuts, p.get(field::Position{}), p.get(field::Mass{}), p.get(field::AprBirthLevel{}),
+                                           p.get(field::AprMother{}), p.get(field::GlobalId{}), parent, mass, action, lost, l});
+      losses.clear();
+      if (l == 0) break;
+      apr::LossScan<D> scan{lost, p.get(field::AprParent{}), {}};
+      int count = 0;
+      Kokkos::parallel_scan("ondine::APR::trim_count", Kokkos::RangePolicy<ExecSpace>(0, n), scan, count);
+      scan.pairs = Kokkos::View<double*, MemSpace>("ondine::APR::trim_losses", 2 * count);
+      Kokkos::parallel_scan("ondine::APR::trim_losses", Kokkos::RangePolicy<ExecSpace>(0, n), scan, count);
+      losses.resize(2 * static_cast<std::size_t>(count));
+      Kokkos::deep_copy(Kokkos::View<double*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(losses.data(), losses.size()), scan.pairs);
+    }
+    const edit::Plan plan = edit::plan(action, n, apr::Delete, apr::Refine, 1 << D, "ondine::APR::trim");
+    removed = comm.sum(static_cast<std::int64_t>(n - plan.kept));
+    const Kokkos::View<int*, MemSpace> order = plan.order;
+    p.permute([&order](const auto& v) { return permuted(v, order); }, static_cast<std::size_t>(plan.kept));
+    return plan.kept;
   }
 
   // L. and Lx for the n owned particles (sorted), from a cell list of the current

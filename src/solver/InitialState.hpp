@@ -14,6 +14,7 @@
 #include "particles/ParticleSet.hpp"
 #include "scene/Scene.hpp"
 #include "solver/CheckpointFields.hpp"
+#include "solver/FillCutsBuild.hpp"
 #include "solver/WallModel.hpp"
 
 namespace ondine {
@@ -81,7 +82,8 @@ void fill_lattice(ParticleSet<D>& p, const Scene& s, std::int64_t first, std::in
 
 // Drops lattice points outside the fluid region or closer to a wall than their
 // block's wall_clearance (dx/2 by default) (with walls: `region`), and those cut off by
-// their block's half-spaces, keeping the order, and renumbers the global ids.
+// their block's half-spaces (beyond the cuts' margins: fill_cuts), keeping the order, and
+// renumbers the global ids.
 template <int D>
 void remove_outside_fluid(ParticleSet<D>& p, const Scene& scene, const FluidRegion<D>* region, const Communicator& comm) {
   const int n = static_cast<int>(p.size());
@@ -103,31 +105,10 @@ void remove_outside_fluid(ParticleSet<D>& p, const Scene& scene, const FluidRegi
     Kokkos::deep_copy(block_end, he);
     Kokkos::deep_copy(block_clearance, hc);
   }
-  int ncut = 0;
-  for (const FluidBlock& blk : scene.blocks) ncut += static_cast<int>(blk.cuts.size());
-  Kokkos::View<int*, MemSpace> cut_first("ondine::Fill::cut_first", nb + 1);
-  Kokkos::View<double* [6], Kokkos::LayoutRight, MemSpace> cut("ondine::Fill::cut", ncut);
-  {
-    auto hf = Kokkos::create_mirror_view(cut_first);
-    auto hcut = Kokkos::create_mirror_view(cut);
-    int c = 0;
-    for (int b = 0; b < nb; ++b) {
-      hf(b) = c;
-      for (const FluidBlock::Cut& k : scene.blocks[b].cuts) {
-        for (int a = 0; a < 3; ++a) {
-          hcut(c, a) = k.point[a];
-          hcut(c, 3 + a) = k.normal[a];
-        }
-        ++c;
-      }
-    }
-    hf(nb) = c;
-    Kokkos::deep_copy(cut_first, hf);
-    Kokkos::deep_copy(cut, hcut);
-  }
+  const FillCuts<D> cuts = fill_cuts<D>(scene);
   Kokkos::parallel_for("ondine::Fill::fluid_region", Kokkos::RangePolicy<ExecSpace>(0, n),
-                       FluidRegionFilter<D>{region ? *region : FluidRegion<D>{}, region != nullptr, block_end, block_clearance, cut_first,
-                                            cut, p.get(field::Position{}), p.get(field::GlobalId{}), keep});
+                       FluidRegionFilter<D>{region ? *region : FluidRegion<D>{}, region != nullptr, block_end, block_clearance, cuts,
+                                            p.get(field::Position{}), p.get(field::GlobalId{}), keep});
   int kept = 0;
   Kokkos::parallel_scan("ondine::Fill::scan", Kokkos::RangePolicy<ExecSpace>(0, n), KeepScan{keep, index}, kept);
   if (comm.sum(static_cast<std::int64_t>(kept)) == 0)

@@ -11,6 +11,7 @@
 #include "kernels/apr/GuardSpacing.hpp"
 #include "kernels/apr/LevelSums.hpp"
 #include "solver/AdaptiveRefinement.hpp"
+#include "solver/FillCutsBuild.hpp"
 #include "solver/KernelDispatch.hpp"
 #include "solver/StageStorage.hpp"
 #include "solver/StepHook.hpp"
@@ -48,7 +49,8 @@ class Refinement final : public StepHook<D> {
   // the APR state of the checkpoint (each rank sorts the particles it owns by their stored
   // level and role; the first step starts with the bookkeeping the saved run would have done
   // after writing it), or every particle a coarse SPH particle and one bookkeeping pass per
-  // level, creating the daughters of each nested level in turn.
+  // level, creating the daughters of each nested level in turn, and the blocks' cuts applied
+  // at each level's own spacing.
   void start(StepState<D>& s, const CheckpointSlice* restart) override {
     if (s.has_walls()) build_level_walls(s);
     apr_ = AdaptiveRefinement<D>(s.scene(), s.domain().box(), s.domain().skin());
@@ -64,6 +66,9 @@ class Refinement final : public StepHook<D> {
     const std::int64_t ids = s.hooks_next_id();
     apr_.initialise(s.particles(), ids >= 0 ? ids : s.comm().sum(static_cast<std::int64_t>(s.owned())));
     for (int l = 1; l < apr_.levels(); ++l) bookkeeping(s);
+    bool cuts = false;
+    for (const FluidBlock& b : s.scene().blocks) cuts = cuts || !b.cuts.empty();
+    if (cuts) trim_to_cuts(s);
   }
 
   // At the start of a step (after the other hooks'): the zones at time t (moving, or
@@ -126,6 +131,8 @@ class Refinement final : public StepHook<D> {
   // (public only for their KOKKOS_LAMBDAs, which nvcc refuses in a private member)
   void bookkeeping(StepState<D>& s);
   long space_guards(StepState<D>& s);
+  // the blocks' cuts applied at each level's own spacing (AdaptiveRefinement::trim_to_cuts)
+  void trim_to_cuts(StepState<D>& s);
 
  private:
   void build_level_walls(StepState<D>& s);

@@ -85,6 +85,19 @@ void Refinement<D>::bookkeeping(StepState<D>& s) {
   refresh_guard_halos(s);
 }
 
+// The fill's cuts at each level's spacing: the particles beyond them go (their mothers keep
+// the rest's mass), then the roles, halos and lists as after a bookkeeping.
+template <int D>
+void Refinement<D>::trim_to_cuts(StepState<D>& s) {
+  ParticleSet<D>& p = s.particles();
+  std::int64_t removed = 0;
+  s.set_owned(apr_.trim_to_cuts(p, s.owned(), s.comm(), fill_cuts<D>(s.scene()), removed));
+  s.domain().invalidate_lists();
+  s.rebuild_lists(true, true);
+  apr_.interpolate(p, s.domain().box(), true, s.walls().near_facets());
+  refresh_guard_halos(s);
+}
+
 // Several ranks, before an output: owned positions are wrapped into the periodic box only
 // at a migration, so the output migrates. A list build is not neutral with zones (the next
 // bookkeeping comes with the Verlet criterion, and a guard's choice of radius is reset),

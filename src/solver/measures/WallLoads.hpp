@@ -241,7 +241,11 @@ std::int64_t wall_leaks(const Simulation<D>& sim, double clearance) {
   if (walls.empty()) return 0;
   long c = 0;
   Kokkos::parallel_reduce("ondine::NFM::leaks", Kokkos::RangePolicy<ExecSpace>(0, n_own),
-                          WallLeakCount<D>{fluid_region<D>(scene, walls, sim.domain().box()), clearance < 0 ? 0.1 * scene.dx : clearance, p.get(field::Position{})}, c);
+                          WallLeakCount<D>{fluid_region<D>(scene, walls, sim.domain().box()), clearance < 0 ? 0.1 * scene.dx : clearance,
+                                           p.get(field::Position{}),
+                                           clearance < 0 && p.has(field::AprBirthLevel{}) ? p.get(field::AprBirthLevel{})
+                                                                                           : field_view_t<field::AprBirthLevel, D>()},
+                          c);
   return sim.comm().sum(static_cast<std::int64_t>(c));
 }
 
