@@ -261,9 +261,8 @@ class AdaptiveRefinement {
   // from the finest level up, a particle that is not a mother and lies beyond its block's
   // cuts goes, a mother keeps its remaining daughters' mass or goes with the last of them.
   // Collective over `comm` (a daughter may live on another rank than its mother: the losses
-  // are gathered by mother id on every rank). Returns the new owned count (halos dropped);
-  // `removed`: the particles removed on all ranks.
-  int trim_to_cuts(ParticleSet<D>& p, int n, const Communicator& comm, const FillCuts<D>& cuts, std::int64_t& removed) {
+  // are gathered by mother id on every rank). Returns the new owned count (halos dropped).
+  int trim_to_cuts(ParticleSet<D>& p, int n, const Communicator& comm, const FillCuts<D>& cuts) {
     Kokkos::View<int*, MemSpace> action("ondine::APR::trim_action", n);  // Keep
     Kokkos::View<double*, MemSpace> lost("ondine::APR::trim_lost", n);
     std::vector<double> losses;  // (mother id, mass) pairs of the level below
@@ -299,7 +298,6 @@ class AdaptiveRefinement {
       Kokkos::deep_copy(Kokkos::View<double*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(losses.data(), losses.size()), scan.pairs);
     }
     const edit::Plan plan = edit::plan(action, n, apr::Delete, apr::Refine, 1 << D, "ondine::APR::trim");
-    removed = comm.sum(static_cast<std::int64_t>(n - plan.kept));
     const Kokkos::View<int*, MemSpace> order = plan.order;
     p.permute([&order](const auto& v) { return permuted(v, order); }, static_cast<std::size_t>(plan.kept));
     return plan.kept;

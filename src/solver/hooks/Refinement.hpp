@@ -136,6 +136,7 @@ class Refinement final : public StepHook<D> {
 
  private:
   void build_level_walls(StepState<D>& s);
+  void relist_after_edit(StepState<D>& s);
   void refresh_guard_halos(StepState<D>& s) {
     if (s.comm().serial()) return;
     ParticleSet<D>& p = s.particles();

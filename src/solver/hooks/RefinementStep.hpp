@@ -78,10 +78,17 @@ void Refinement<D>::bookkeeping(StepState<D>& s) {
   }
   domain.build_cells(p.get(field::Position{}), static_cast<int>(p.size()));  // for the prolongation gradient
   s.set_owned(apr_.update(p, domain.cells(), domain.box(), s.owned(), s.comm(), s.walls().near_facets()));
-  domain.invalidate_lists();
   bookkeeping_due_ = false;
+  relist_after_edit(s);
+}
+
+// After particles were created or removed: the roles' lists, then the passive guards (once per
+// edit) and, on several ranks, their halo copies.
+template <int D>
+void Refinement<D>::relist_after_edit(StepState<D>& s) {
+  s.domain().invalidate_lists();
   s.rebuild_lists(true, true);
-  apr_.interpolate(p, domain.box(), true, s.walls().near_facets());  // passive guards: once per bookkeeping
+  apr_.interpolate(s.particles(), s.domain().box(), true, s.walls().near_facets());
   refresh_guard_halos(s);
 }
 
@@ -89,13 +96,8 @@ void Refinement<D>::bookkeeping(StepState<D>& s) {
 // the rest's mass), then the roles, halos and lists as after a bookkeeping.
 template <int D>
 void Refinement<D>::trim_to_cuts(StepState<D>& s) {
-  ParticleSet<D>& p = s.particles();
-  std::int64_t removed = 0;
-  s.set_owned(apr_.trim_to_cuts(p, s.owned(), s.comm(), fill_cuts<D>(s.scene()), removed));
-  s.domain().invalidate_lists();
-  s.rebuild_lists(true, true);
-  apr_.interpolate(p, s.domain().box(), true, s.walls().near_facets());
-  refresh_guard_halos(s);
+  s.set_owned(apr_.trim_to_cuts(s.particles(), s.owned(), s.comm(), fill_cuts<D>(s.scene())));
+  relist_after_edit(s);
 }
 
 // Several ranks, before an output: owned positions are wrapped into the periodic box only
