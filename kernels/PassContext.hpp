@@ -51,6 +51,8 @@ struct PassContext {
   // the pair terms' coefficients at this level's radius
   double nu_pair = 0;        // the fluid viscous term's nu (Morris: times the lattice factor)
   double delta_coeff = 0;    // delta c0 R (2.60)
+  bool delta_hydrostatic = false;  // scheme.delta_sph_form: hydrostatic
+  Vec<D> rho_hydrostatic;          // its rho0 g / c0^2: the hydrostatic density gradient at rho0
   double av_alpha_R_c0 = 0;  // alpha R c0 (2.58)
   double P_min = 0;          // background pressure (2.105)
   double riemann_eta = 0;    // Riemann-SPH: > 0 the low-dissipation pressure (kernels/terms/RiemannLeduc.hpp)

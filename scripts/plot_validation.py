@@ -92,7 +92,7 @@ def by_scheme(rs):
     return out
 
 
-FLUX = {"delta_sph": "δ-SPH", "riemann": "Riemann (Leduc)", "riemann_vila": "Riemann (Vila)"}
+FLUX = {"delta_sph": "δ-SPH", "delta_sph_hydrostatic": "δ-SPH (hydrostatic)", "riemann": "Riemann (Leduc)", "riemann_vila": "Riemann (Vila)"}
 TRANSPORT = {"lagrangian": "", "shifting": " + shifting", "ale": " + ALE", "ale_free": " + ALE (free)"}
 
 

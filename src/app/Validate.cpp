@@ -53,8 +53,10 @@ bool options_known(const ValidateOptions& opt) {
       return false;
     }
   }
-  if (opt.flux != "case" && opt.flux != "delta_sph" && opt.flux != "riemann" && opt.flux != "riemann_vila") {
-    std::fprintf(stderr, "ondine validate: --flux must be case, delta_sph, riemann or riemann_vila, got '%s'\n", opt.flux.c_str());
+  if (opt.flux != "case" && opt.flux != "delta_sph" && opt.flux != "delta_sph_hydrostatic" && opt.flux != "riemann" &&
+      opt.flux != "riemann_vila") {
+    std::fprintf(stderr, "ondine validate: --flux must be case, delta_sph, delta_sph_hydrostatic, riemann or riemann_vila, got '%s'\n",
+                 opt.flux.c_str());
     return false;
   }
   if (opt.transport != "case" && opt.transport != "lagrangian" && opt.transport != "shifting" && opt.transport != "ale" &&
@@ -76,14 +78,14 @@ bool options_known(const ValidateOptions& opt) {
 // --flux riemann: Riemann-SPH with MUSCL in place of delta-SPH, every stage's gradients, and the
 // thesis' acoustic CFL 0.375 (the dam-break case's 0.75 is beyond Riemann-SPH's stable step);
 // riemann_vila: the same in Vila's form with mass fluxes (2.84-2.89); --flux delta_sph: the
-// centred flux (the case's delta-SPH and viscosities); --transport: scheme.transport (ale_free:
-// ale with scheme.ale.cut_supports: free)
+// centred flux (the case's delta-SPH and viscosities), delta_sph_hydrostatic the same (its form:
+// load_rung_scene); --transport: scheme.transport (ale_free: ale with scheme.ale.cut_supports: free)
 std::vector<std::string> scheme_sets(const ValidateOptions& opt) {
   std::vector<std::string> s;
   if (riemann_flux(opt))
     s = {"scheme.flux=riemann", "scheme.delta_sph=0", "scheme.density_gradient=stage", "scheme.cfl.acoustic=0.375"};
   if (opt.flux == "riemann_vila") s.push_back("scheme.riemann.variant=vila");
-  if (opt.flux == "delta_sph") s = {"scheme.flux=delta_sph"};
+  if (opt.flux == "delta_sph" || opt.flux == "delta_sph_hydrostatic") s = {"scheme.flux=delta_sph"};
   if (opt.transport != "case") {
     s.push_back(opt.transport == "shifting" ? "scheme.shifting=true" : "scheme.shifting=false");
     if (opt.transport == "ale" || opt.transport == "ale_free") s.push_back("scheme.transport=ale");
@@ -119,14 +121,25 @@ struct RunScale {
 // The scheme a scene runs: flux delta_sph, riemann (Leduc's form) or riemann_vila; transport
 // lagrangian, shifting, ale or ale_free (the names of --flux and --transport)
 void resolve_scheme(const Scene& s, RunScale& scale) {
-  scale.flux = s.flux == FluxScheme::DeltaSph ? "delta_sph" : s.riemann_variant == RiemannVariant::Vila ? "riemann_vila" : "riemann";
+  scale.flux = s.flux == FluxScheme::DeltaSph ? (s.delta_sph_hydrostatic ? "delta_sph_hydrostatic" : "delta_sph")
+                : s.riemann_variant == RiemannVariant::Vila ? "riemann_vila" : "riemann";
   scale.transport = s.ale ? (s.ale_tangential_cut ? "ale" : "ale_free") : s.shifting ? "shifting" : "lagrangian";
+}
+
+// A rung's scene: the case file with the overrides; where it has a delta-SPH term, --flux delta_sph
+// gives it the thesis' form (2.60) and delta_sph_hydrostatic the hydrostatic one
+// (scheme.delta_sph_form; a case without the term keeps none)
+Scene load_rung_scene(const ValidateOptions& opt, const std::string& file, const std::vector<std::string>& sets) {
+  Scene s = load_case(opt.source_dir + "/" + file, sets);
+  if (s.delta_sph > 0 && (opt.flux == "delta_sph" || opt.flux == "delta_sph_hydrostatic"))
+    s.delta_sph_hydrostatic = opt.flux == "delta_sph_hydrostatic";
+  return s;
 }
 
 // One run of a rung into OUT/dir, with its profile.csv.
 RunReport run_one(const ValidateOptions& opt, const ValidationCase& c, const Rung& r, double resolution,
                   const std::vector<std::string>& overrides, const std::string& dir, RunScale& scale) {
-  const Scene scene = load_case(opt.source_dir + "/" + (r.file.empty() ? c.file : r.file), overrides);
+  const Scene scene = load_rung_scene(opt, r.file.empty() ? c.file : r.file, overrides);
   RunOptions ro;
   ro.out_dir = opt.out_dir + "/" + dir;
   ro.progress = false;
@@ -273,7 +286,7 @@ bool resolve_runs(const ValidateOptions& opt, const std::vector<const Validation
       }
       for (const std::vector<std::string>& sets : runs) {
         try {
-          const Scene s = load_case(opt.source_dir + "/" + (r.file.empty() ? c->file : r.file), sets);
+          const Scene s = load_rung_scene(opt, r.file.empty() ? c->file : r.file, sets);
           std::printf("%s %s dx %g flux scheme %s\n", c->name.c_str(), r.variant.c_str(), r.dx,
                       flux_schemes[flux_scheme_index(flux_key(s))].name);  // the reader refuses a scheme not built
         } catch (const std::exception& e) {

@@ -14,7 +14,8 @@ struct ValidateOptions {
   std::string out_dir = "out/validation";
   std::string source_dir;          // where cases/ and scripts/ are
   // the fluid flux and the particle transport of every run, "case" for what the case files say:
-  // flux delta_sph or riemann (Riemann-SPH with MUSCL), transport lagrangian or shifting
+  // flux delta_sph (its form the thesis'), delta_sph_hydrostatic or riemann (Riemann-SPH with MUSCL),
+  // riemann_vila, transport lagrangian or shifting
   // (scheme_sets() in Validate.cpp); an entry's own overrides still win
   std::string flux = "case", transport = "case";
   bool list = false;  // --list: print the catalogue (name, group, case file) and run nothing

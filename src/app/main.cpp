@@ -77,7 +77,7 @@ int run_app(int argc, char** argv, int ranks, int rank, const std::string& no_de
   validate->add_flag("--dry-run", vopt.dry_run,
                      "resolve every chosen run (case file, overrides, named flux scheme) and run nothing; exit 1 when one is refused");
   validate->add_option("--flux", vopt.flux,
-                       "case (each case file's), delta_sph, riemann (Riemann-SPH with MUSCL, Leduc's form) or riemann_vila (Vila's form with mass fluxes): the fluid flux of every run (docs/case-file.md scheme.flux)");
+                       "case (each case file's), delta_sph (the thesis' delta-SPH, 2.60), delta_sph_hydrostatic (the same with scheme.delta_sph_form: hydrostatic), riemann (Riemann-SPH with MUSCL, Leduc's form) or riemann_vila (Vila's form with mass fluxes): the fluid flux of every run (docs/case-file.md scheme.flux)");
   validate->add_option("--transport", vopt.transport,
                        "case (each case file's), lagrangian, shifting, ale (Oger's transport velocity; with --flux riemann or riemann_vila) or ale_free (the same with scheme.ale.cut_supports: free): the particle transport of every run (docs/case-file.md scheme.transport)");
   try {

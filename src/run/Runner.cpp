@@ -212,6 +212,7 @@ nlohmann::json run_summary(const Scene& scene, const RunOptions& opt, const Simu
                  {"riemann_reconstruction", scene.flux == FluxScheme::Riemann ? (scene.riemann_muscl ? "muscl_minmod" : "none") : "-"},
                  {"riemann_dissipation", scene.flux == FluxScheme::Riemann ? (scene.riemann_low_dissipation ? "low" : "acoustic") : "-"},
                  {"delta_sph", scene.delta_sph},
+                 {"delta_sph_form", scene.delta_sph > 0 ? (scene.delta_sph_hydrostatic ? "hydrostatic" : "renormalised") : "-"},
                  {"artificial_viscosity", scene.artificial_viscosity},
                  {"background_pressure", scene.background_pressure},
                  {"wall_velocity_reconstruction", scene.wall_velocity_reconstruction && !scene.walls.empty()},

@@ -140,7 +140,7 @@ static void read_flux(const Reader& r, const YAML::Node& sc, Scene& s) {
 
 void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
   if (const YAML::Node sc = root["scheme"]) {
-    r.only_keys(sc, "scheme", {"viscous_term", "delta_sph", "artificial_viscosity", "background_pressure",
+    r.only_keys(sc, "scheme", {"viscous_term", "delta_sph", "delta_sph_form", "artificial_viscosity", "background_pressure",
                                "time_integrator", "cfl", "shifting", "transport", "consistent_laplacian",
                                "wall_velocity_reconstruction", "wall_contact", "renormalised_continuity", "density_gradient", "flux",
                                "riemann", "ale", "pair_list"});
@@ -157,6 +157,12 @@ void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
     if (sc["delta_sph"]) {
       s.delta_sph = r.non_negative(sc["delta_sph"], "scheme.delta_sph", "");
       if (s.delta_sph >= 0.2) r.fail(sc["delta_sph"], "scheme.delta_sph", "expected 0 <= delta < 0.2 (stability bound of thesis 2.60)");
+    }
+    if (sc["delta_sph_form"]) {
+      s.delta_sph_hydrostatic =
+          r.word(sc["delta_sph_form"], "scheme.delta_sph_form", {"renormalised", "hydrostatic"}) == "hydrostatic";
+      if (!(s.delta_sph > 0))
+        r.fail(sc["delta_sph_form"], "scheme.delta_sph_form", "is the form of the delta-SPH term: set scheme.delta_sph > 0, or remove it");
     }
     if (sc["artificial_viscosity"]) s.artificial_viscosity = r.non_negative(sc["artificial_viscosity"], "scheme.artificial_viscosity", " (alpha)");
     if (sc["consistent_laplacian"]) s.consistent_laplacian = r.boolean(sc["consistent_laplacian"], "scheme.consistent_laplacian");

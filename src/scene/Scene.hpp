@@ -242,6 +242,9 @@ struct Scene {
   ViscousTerm viscous_term = ViscousTerm::None;
   Turbulence turbulence;              // turbulence: (Morris viscosity with nu + nu_T)
   double delta_sph = 0.0;             // 0 = no delta-SPH term (2.60)
+  // scheme.delta_sph_form: hydrostatic: Psi_ij of (2.60) from the density less its hydrostatic part
+  // (Fourtakas et al. 2019) instead of the renormalised gradients (kernels/terms/DeltaSphDiffusion.hpp)
+  bool delta_sph_hydrostatic = false;
   double artificial_viscosity = 0.0;  // alpha of (2.58); 0 = off
   bool background_pressure = false;   // tensile correction (2.105)
   bool shifting = false;              // particle shifting (2.107)-(2.111) (scheme.transport: shifting)

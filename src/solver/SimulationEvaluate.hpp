@@ -85,6 +85,8 @@ PassContext<D> Simulation<D>::context(const LevelSpan<D>& L) const {
   // Morris term, the consistent one has its own weights
   c.nu_pair = scene_.viscous_term == ViscousTerm::Morris && !uses_consistent_laplacian(scene_) ? scene_.nu * scheme_.morris_factor : scene_.nu;
   c.delta_coeff = scene_.delta_sph * scene_.c0 * L.R;
+  c.delta_hydrostatic = scene_.delta_sph_hydrostatic;
+  for (int k = 0; k < D; ++k) c.rho_hydrostatic[k] = scene_.rho0 * scene_.gravity[k] / (scene_.c0 * scene_.c0);
   c.av_alpha_R_c0 = scene_.artificial_viscosity * L.R * scene_.c0;
   c.riemann_eta = scene_.riemann_low_dissipation ? 3.0 : 0.0;  // eta of Zhang et al. (2017)
   c.u_char = scene_.ale_mach * scene_.c0;
