@@ -161,7 +161,8 @@ void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
     if (sc["delta_sph_form"]) {
       s.delta_sph_hydrostatic =
           r.word(sc["delta_sph_form"], "scheme.delta_sph_form", {"renormalised", "hydrostatic"}) == "hydrostatic";
-      if (!(s.delta_sph > 0))
+      // (a delta_sph of 0 is accepted with it: an override that switches the term off, --flux riemann's)
+      if (!sc["delta_sph"])
         r.fail(sc["delta_sph_form"], "scheme.delta_sph_form", "is the form of the delta-SPH term: set scheme.delta_sph > 0, or remove it");
     }
     if (sc["artificial_viscosity"]) s.artificial_viscosity = r.non_negative(sc["artificial_viscosity"], "scheme.artificial_viscosity", " (alpha)");
