@@ -217,12 +217,14 @@ const std::vector<ValidationCase>& catalogue() {
       // 3D stability: the thesis' tank (§4.6.2: 1 x 1 x 2 m half full, c0 = 30 m/s, R/dx = 2.5)
       // 5 s undamped, at 10 and 25 particles per depth (dx 0.04 is the thesis'): no mass drift, no
       // crossing, E_k / E_p below the damped entry's 1e-3; the pressure's departure from
-      // rho g (H - z) is shown, not bounded. The case file's delta-SPH form is the hydrostatic one:
-      // with the thesis' (--flux delta_sph) the first acoustic mode grows (docs/validation.md,
-      // "The still tank's acoustic mode and the δ-SPH form")
+      // rho g (H - z) within the goal: every layer's mean within 2 % of rho g H, every particle
+      // within 5 % (measured 0.78 % and 1.3 % at dx 0.1, 1.4 % and 2.0 % at 0.04). The case file's
+      // delta-SPH form is the hydrostatic one: with the thesis' (--flux delta_sph) the first acoustic
+      // mode grows (docs/validation.md, "The still tank's acoustic mode and the δ-SPH form")
       {"stability_hydrostatic_tank_3d_undamped", "cases/hydrostatic_tank_3d.yaml", 1.0, {{0.1, false}, {0.04, true}},
-       stable({{"max_kinetic_energy_ratio", 0.01}, {"kinetic_over_potential", 1e-3}, {"mass_drift", 1e-12}, {"wall_crossings", 0.5}}),
-       {"time.duration=5", "time.damping=0", "time.output_interval=0.05"}, {}, {"pressure_linf", "pressure_layer_mean", "wall_leaks", "wall_corrections"}},
+       stable({{"max_kinetic_energy_ratio", 0.01}, {"kinetic_over_potential", 1e-3}, {"mass_drift", 1e-12}, {"wall_crossings", 0.5},
+               {"pressure_layer_mean", 0.02}, {"pressure_linf", 0.05}}),
+       {"time.duration=5", "time.damping=0", "time.output_interval=0.05"}, {}, {"wall_leaks", "wall_corrections"}},
       // SPHERIC Test 2 through its impacts (the box at 0.4 s, the far wall's run-up, the wave that
       // comes back over the box) to 3 s: density, E_k and crossings bounded. The released column
       // can give at most its potential energy above the floor, M g H / 2, so E_k stays under half of
