@@ -157,22 +157,13 @@ TEST_CASE("delta-SPH, hydrostatic form: the undamped still tank's acoustic mode 
 }
 
 TEST_CASE("scheme.delta_sph_form is refused without the delta-SPH term", "[unit][case_file]") {
-  const std::string riemann = R"(dimension: 2
-domain: {min: [0, 0], max: [1, 1]}
-fluid: {rho0: 1000, sound_speed: 10}
-discretisation: {dx: 0.1}
-fluid_blocks: [{min: [0, 0], max: [1, 1]}]
-scheme: {delta_sph_form: hydrostatic}
-time: {duration: 1}
-)";
-  CHECK_THROWS_WITH(parse_case(riemann, "form.yaml"), Contains("scheme.delta_sph_form") && Contains("scheme.delta_sph > 0"));
-  const std::string word = R"(dimension: 2
-domain: {min: [0, 0], max: [1, 1]}
-fluid: {rho0: 1000, sound_speed: 10}
-discretisation: {dx: 0.1}
-fluid_blocks: [{min: [0, 0], max: [1, 1]}]
-scheme: {delta_sph: 0.1, delta_sph_form: fourtakas}
-time: {duration: 1}
-)";
-  CHECK_THROWS_WITH(parse_case(word, "form.yaml"), Contains("scheme.delta_sph_form") && Contains("hydrostatic"));
+  const auto with_scheme = [](const std::string& scheme) {
+    return "dimension: 2\ndomain: {min: [0, 0], max: [1, 1]}\nfluid: {rho0: 1000, sound_speed: 10}\n"
+           "discretisation: {dx: 0.1}\nfluid_blocks: [{min: [0, 0], max: [1, 1]}]\nscheme: {" +
+           scheme + "}\ntime: {duration: 1}\n";
+  };
+  CHECK_THROWS_WITH(parse_case(with_scheme("delta_sph_form: hydrostatic"), "form.yaml"),
+                    Contains("scheme.delta_sph_form") && Contains("scheme.delta_sph > 0"));
+  CHECK_THROWS_WITH(parse_case(with_scheme("delta_sph: 0.1, delta_sph_form: fourtakas"), "form.yaml"),
+                    Contains("scheme.delta_sph_form") && Contains("hydrostatic"));
 }

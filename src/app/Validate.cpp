@@ -41,6 +41,8 @@ std::vector<const ValidationCase*> chosen_cases(const ValidateOptions& opt) {
 // false (said on stderr) for an unknown --case or --level
 // --flux riemann or riemann_vila: a Riemann-SPH flux
 bool riemann_flux(const ValidateOptions& opt) { return opt.flux == "riemann" || opt.flux == "riemann_vila"; }
+// --flux delta_sph or delta_sph_hydrostatic: the centred flux, the delta-SPH term's form named
+bool delta_sph_flux(const ValidateOptions& opt) { return opt.flux == "delta_sph" || opt.flux == "delta_sph_hydrostatic"; }
 
 bool options_known(const ValidateOptions& opt) {
   for (const std::string& n : opt.cases) {
@@ -53,8 +55,7 @@ bool options_known(const ValidateOptions& opt) {
       return false;
     }
   }
-  if (opt.flux != "case" && opt.flux != "delta_sph" && opt.flux != "delta_sph_hydrostatic" && opt.flux != "riemann" &&
-      opt.flux != "riemann_vila") {
+  if (opt.flux != "case" && !delta_sph_flux(opt) && !riemann_flux(opt)) {
     std::fprintf(stderr, "ondine validate: --flux must be case, delta_sph, delta_sph_hydrostatic, riemann or riemann_vila, got '%s'\n",
                  opt.flux.c_str());
     return false;
@@ -85,7 +86,7 @@ std::vector<std::string> scheme_sets(const ValidateOptions& opt) {
   if (riemann_flux(opt))
     s = {"scheme.flux=riemann", "scheme.delta_sph=0", "scheme.density_gradient=stage", "scheme.cfl.acoustic=0.375"};
   if (opt.flux == "riemann_vila") s.push_back("scheme.riemann.variant=vila");
-  if (opt.flux == "delta_sph" || opt.flux == "delta_sph_hydrostatic") s = {"scheme.flux=delta_sph"};
+  if (delta_sph_flux(opt)) s = {"scheme.flux=delta_sph"};
   if (opt.transport != "case") {
     s.push_back(opt.transport == "shifting" ? "scheme.shifting=true" : "scheme.shifting=false");
     if (opt.transport == "ale" || opt.transport == "ale_free") s.push_back("scheme.transport=ale");
@@ -131,7 +132,7 @@ void resolve_scheme(const Scene& s, RunScale& scale) {
 // (scheme.delta_sph_form; a case without the term keeps none)
 Scene load_rung_scene(const ValidateOptions& opt, const std::string& file, const std::vector<std::string>& sets) {
   Scene s = load_case(opt.source_dir + "/" + file, sets);
-  if (s.delta_sph > 0 && (opt.flux == "delta_sph" || opt.flux == "delta_sph_hydrostatic"))
+  if (s.delta_sph > 0 && delta_sph_flux(opt))
     s.delta_sph_hydrostatic = opt.flux == "delta_sph_hydrostatic";
   return s;
 }
