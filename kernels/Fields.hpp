@@ -89,6 +89,12 @@ ONDINE_FIELD_(StageMassSum, "stage_mass_sum", double, false, false);
 ONDINE_FIELD_(StagePositionSum, "stage_position_sum", double, true, false);
 ONDINE_FIELD_(StageVelocitySum, "stage_velocity_sum", double, true, false);
 ONDINE_FIELD_(StageDensitySum, "stage_density_sum", double, false, false);
+// Local time stepping (refinement.local_time_stepping): a level's state at the end of its
+// current step, while the finer levels take theirs (their guards read the coarse state
+// interpolated in time between the step's start, the stage storage, and this end).
+ONDINE_FIELD_(LevelEndPosition, "level_end_position", double, true, false);
+ONDINE_FIELD_(LevelEndVelocity, "level_end_velocity", double, true, false);
+ONDINE_FIELD_(LevelEndDensity, "level_end_density", double, false, false);
 #undef ONDINE_FIELD
 #undef ONDINE_FIELD_
 }  // namespace field

@@ -58,7 +58,10 @@ struct RungeKuttaStage {
     }
   }
 
-  void run(int n) const { Kokkos::parallel_for("ondine::Integrator::stage", Kokkos::RangePolicy<ExecSpace>(0, n), *this); }
+  void run(int n) const { run(0, n); }
+  void run(int first, int end) const {
+    Kokkos::parallel_for("ondine::Integrator::stage", Kokkos::RangePolicy<ExecSpace>(first, end), *this);
+  }
 };
 
 // Final classical RK4 update: y1 = y0 + dt (acc + k4/6), acc = (k1 + 2 k2 + 2 k3)/6.
@@ -78,8 +81,28 @@ struct RungeKutta4Final {
     if (v.masses) v.m(i) = v.m0(i) + dt * (v.ma(i) + v.dm(i) / 6.0);
   }
 
-  void run(int n) const {
-    Kokkos::parallel_for("ondine::Integrator::rk4_final", Kokkos::RangePolicy<ExecSpace>(0, n), *this);
+  void run(int n) const { run(0, n); }
+  void run(int first, int end) const {
+    Kokkos::parallel_for("ondine::Integrator::rk4_final", Kokkos::RangePolicy<ExecSpace>(first, end), *this);
+  }
+};
+
+// A step's start over [first, end): y0 = y (the whole set's is a deep copy; with local time
+// stepping each level starts its own steps).
+template <int D>
+struct RungeKuttaStart {
+  RungeKuttaViews<D> v;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    for (int k = 0; k < D; ++k) {
+      v.x0(i, k) = v.x(i, k);
+      v.u0(i, k) = v.u(i, k);
+    }
+    v.r0(i) = v.rho(i);
+    if (v.masses) v.m0(i) = v.m(i);
+  }
+  void run(int first, int end) const {
+    Kokkos::parallel_for("ondine::Integrator::start", Kokkos::RangePolicy<ExecSpace>(first, end), *this);
   }
 };
 

@@ -99,9 +99,10 @@ struct WallImpermeability {
     }
   }
 
-  long run(int n) const {
+  long run(int n) const { return run(0, n); }
+  long run(int first, int end) const {
     long c = 0;
-    Kokkos::parallel_reduce("ondine::NFM::impermeability", Kokkos::RangePolicy<ExecSpace>(0, n), *this, c);
+    Kokkos::parallel_reduce("ondine::NFM::impermeability", Kokkos::RangePolicy<ExecSpace>(first, end), *this, c);
     return c;
   }
 };

@@ -29,7 +29,8 @@ class ParticleSet {
                             field::AprLevel, field::AprBirthLevel, field::AprGuard, field::AprMother, field::AprParent,
                             field::StagePosition, field::StageVelocity, field::StageDensity,
                             field::StagePositionSum, field::StageVelocitySum, field::StageDensitySum,
-                            field::StageMass, field::StageMassSum>;
+                            field::StageMass, field::StageMassSum,
+                            field::LevelEndPosition, field::LevelEndVelocity, field::LevelEndDensity>;
   static constexpr int dimension = D;
 
   explicit ParticleSet(std::size_t n = 0) : n_(n) {}

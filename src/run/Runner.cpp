@@ -183,7 +183,10 @@ nlohmann::json run_summary(const Scene& scene, const RunOptions& opt, const Simu
                        {"guards", apr.guards()},
                        {"passive_guards", apr.passive()},
                        {"refined", apr.refined()},
-                       {"deleted", apr.deleted()}};
+                       {"deleted", apr.deleted()},
+                       {"local_time_stepping", scene.refinement_local_time_stepping}};
+    // the steps each level took (this process; with local time stepping level l takes 2^l per coarse step)
+    if (!sim.level_steps().empty()) j["refinement"]["level_steps"] = sim.level_steps();
   }
   if (const auto* open = sim.template find_hook<OpenBoundaryStep<D>>()) {
     // open boundaries: what crossed each plane (kg since t = 0) and the particles created and removed

@@ -287,6 +287,8 @@ struct Scene {
   bool refinement_guard_shifting = false;  // shift the daughter guards towards a regular arrangement (kernels/apr/GuardSpacing.hpp)
   bool refinement_mother_shifting = false;  // shift the mother guards towards their daughters' volume (kernels/apr/GuardSpacing.hpp)
   double refinement_transition = 1.0;  // width of the daughter-guard layer, in R of the coarser level (thesis: R_m)
+  // local time stepping by level: level l advances with step dt_0 / 2^l (Simulation<D>::step_local)
+  bool refinement_local_time_stepping = false;
   int max_refinement_level() const {
     int l = 0;
     for (const RefinementZone& z : refinement_zones) l = l > z.level ? l : z.level;

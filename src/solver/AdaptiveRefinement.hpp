@@ -140,7 +140,7 @@ class AdaptiveRefinement {
       }
     place_zones();
     sort(p, n, false);  // each particle keeps the role stored with it
-    weights_valid_ = false;
+    weights_valid_ = 0;
   }
 
   // An output interpolates every guard (and may fit some at R_m): the guards' fields
@@ -152,7 +152,7 @@ class AdaptiveRefinement {
   }
   void restore_wide_flags() {
     if (wide_saved_.extent(0) == wide_.extent(0)) Kokkos::deep_copy(wide_, wide_saved_);
-    weights_valid_ = false;
+    weights_valid_ = 0;
   }
 
   // Moves the zones to time t (translation) and, every `every` steps, re-centres a
@@ -324,33 +324,42 @@ class AdaptiveRefinement {
     } else if (reset_wide) {
       Kokkos::deep_copy(wide_, 0);  // new roles: each guard tries R_f again
     }
-    weights_valid_ = false;
+    weights_valid_ = 0;
   }
 
   // Guard interpolation (5.24) of the velocity and density (and density gradient),
   // at the start of every Runge-Kutta stage, from the SPH particles of this stage;
-  // with `passive`, of the passive guards too (at a bookkeeping and before an output).
-  // The shape functions are recomputed when invalidated (a new step, new lists) and
-  // always with `passive`.
+  // with `passive`, of the passive guards too (at a bookkeeping and before an output);
+  // `only` >= 0: the guards of that level only (local time stepping). The shape functions
+  // are recomputed when invalidated (a new step, new lists) and always with `passive`.
   void interpolate(ParticleSet<D>& p, const PeriodicBox<D>& box, bool passive = false,
-                   const NearFacets<D>& walls = NearFacets<D>()) {
+                   const NearFacets<D>& walls = NearFacets<D>(), int only = -1) {
     Kokkos::Timer timer;
-    if (passive || !weights_valid_) {
+    const auto selected = [&](int l) { return only < 0 || l == only; };
+    bool stale = passive;
+    for (int l = 0; l < levels_; ++l) stale = stale || (selected(l) && !(weights_valid_ & (1u << l)));
+    if (stale) {
       with_kernel<D>(kernel_, 1.0, [&](auto W1) {
         apr::GuardWeights<D, decltype(W1)> f{l_cross_, box, zones_, W1, p.get(field::Position{}), p.get(field::Density{}),
                                              p.get(field::Mass{}), p.get(field::AprBirthLevel{}), p.get(field::AprMother{}), psi_, used_, wide_};
         for (int l = 0; l < levels_; ++l) {
+          if (!selected(l) || (!passive && (weights_valid_ & (1u << l)))) continue;
           const int e = passive ? end_[l] : guard_end_[l];
           if (e > active_end_[l])
             Kokkos::parallel_for("ondine::APR::GuardWeights", Kokkos::RangePolicy<ExecSpace>(active_end_[l], e), f);
+          if (!passive) weights_valid_ |= 1u << l;
         }
       });
-      weights_valid_ = true;
+      // the passive guards' weights are fitted with the others': every selected level is fresh
+      if (passive)
+        for (int l = 0; l < levels_; ++l)
+          if (selected(l)) weights_valid_ |= 1u << l;
     }
     apr::GuardApply<D> f{l_cross_, psi_, used_, p.get(field::Velocity{}), p.get(field::Density{}), field_view_t<field::DensityGradient, D>(),
                          walls, box, zones_, p.get(field::Position{}), p.get(field::AprBirthLevel{})};
     if (p.has(field::DensityGradient{})) f.grad_rho = p.get(field::DensityGradient{});
     for (int l = 0; l < levels_; ++l) {
+      if (!selected(l)) continue;
       const int e = passive ? end_[l] : guard_end_[l];
       if (e > active_end_[l]) {
         std::int64_t limited = 0;
@@ -365,8 +374,9 @@ class AdaptiveRefinement {
   void count_guard_shifts(std::int64_t moved) { guard_shifts_ += moved; }
   void count_guards_limited(std::int64_t n) { guards_limited_ += n; }
 
-  // positions moved (a new step): the shape functions are recomputed at the next interpolation
-  void invalidate_weights() { weights_valid_ = false; }
+  // positions moved (a new step; with local time stepping a new step of `level`): the shape
+  // functions (of that level's guards) are recomputed at the next interpolation
+  void invalidate_weights(int level = -1) { weights_valid_ = level < 0 ? 0u : weights_valid_ & ~(1u << level); }
   // per guard (owned index): fitted at R_m since the last list build (kept across a migration)
   const Kokkos::View<int*, MemSpace>& wide_flags() const { return wide_; }
 
@@ -430,7 +440,7 @@ private:
   Kokkos::View<int*, MemSpace> wide_;  // per guard: fitted at R_m since the last list build (GuardWeights)
   Kokkos::View<int*, MemSpace> wide_saved_;  // wide_ before an output (save_wide_flags)
   Kokkos::View<int*, MemSpace> used_;  // per guard: its Lx entries within the interpolation radius (first in its row)
-  bool weights_valid_ = false;
+  unsigned weights_valid_ = 0;  // bit l: the shape functions of level l's guards are up to date
   std::int64_t next_id_ = 0, refined_ = 0, deleted_ = 0, families_moved_ = 0, guard_shifts_ = 0, guards_limited_ = 0;
   double interp_seconds_ = 0;
   double momentum_change_[D] = {}, momentum_scale_ = 0;

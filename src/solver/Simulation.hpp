@@ -122,6 +122,8 @@ class Simulation {
   // adaptive particle refinement (only with refinement zones; hooks/Refinement.hpp, docs/apr.md)
   bool refinement_on() const { return refinement_ != nullptr; }
   const AdaptiveRefinement<D>& refinement() const;
+  // local time stepping: the steps each level has taken since this process started (empty without it)
+  const std::vector<std::int64_t>& level_steps() const { return level_steps_; }
 
  private:
   template <int>
@@ -134,8 +136,14 @@ class Simulation {
   void rebuild_lists(bool roles, bool may_rebalance);
   // evaluation (solver/SimulationEvaluate.hpp)
   void update_walls(double t);
-  // stepping (solver/SimulationStep.hpp)
-  double time_step() const;
+  // stepping (solver/SimulationStep.hpp); only >= 0: that level's own step
+  double time_step(int only = -1) const;
+  double capped_step(double dt, double t_stop) const;
+  void finish_step(double dt);
+  // local time stepping by level (solver/SimulationLocalSteps.hpp)
+  double step_local(double t_stop);
+  void advance_level(int l, double t0, double h, bool fresh, std::vector<double>& start, std::vector<double>& span);
+  void hold_coarser_at(int l, double tau, const std::vector<double>& start, const std::vector<double>& span);
 
   const Scene scene_;  // as parsed: what the solver derives lives in its own members
   Domain<D> domain_;
@@ -154,6 +162,8 @@ class Simulation {
   Diagnostics initial_;
   std::vector<std::unique_ptr<StepHook<D>>> hooks_;  // in the order their points run
   Refinement<D>* refinement_ = nullptr;  // the refinement hook (one of hooks_), with refinement zones
+  int eval_level_ = -1;  // local time stepping: the one level evaluate() passes over (-1: all)
+  std::vector<std::int64_t> level_steps_;  // local time stepping: steps each level has taken
 };
 
 // An output instant of a simulation, as a scope: while the frame lives, the simulation's

@@ -1,7 +1,8 @@
 #pragma once
 // Simulation<D>: one derivative evaluation (du/dt, drho/dt, P), the same passes for a
 // uniform run (one level) and a run with refinement zones (each level with its radius,
-// list and wall cells; the guards interpolated first, 5.24):
+// list and wall cells; the guards interpolated first, 5.24; with local time stepping one
+// level at a time, eval_level_):
 //   pressure from the EOS; P_min of the background pressure (2.105);
 //   per level: the Shepard factor gamma of the walls (4.55), the density gradient (and the
 //   consistent Laplacian's weights next to no-slip walls);
@@ -129,7 +130,7 @@ void Simulation<D>::evaluate(const bool later_stage) {
   const bool walls = !walls_.empty();
   if (walls) update_walls(stage_time_);
   StepState<D> state(*this);
-  if (refinement_) refinement_->interpolate_guards(state);  // guards from this stage's SPH particles (5.24)
+  if (refinement_) refinement_->interpolate_guards(state, eval_level_);  // guards from this stage's SPH particles (5.24)
   // next to no-slip walls: the consistent Laplacian's weights (grown with some slack)
   if (walls && uses_consistent_laplacian(scene_) && static_cast<int>(laplacian_weights_.extent(0)) < n)
     laplacian_weights_ = LaplacianWeightView<D>("ondine::NFM::laplacian_weights", n + n / 8 + 16);
@@ -145,7 +146,8 @@ void Simulation<D>::evaluate(const bool later_stage) {
   // scheme.density_gradient: step holds the first stage's gradient through the step (the owned
   // particles carry it through a migration; the halos are refreshed below all the same)
   const bool gradient_pass = gradient && !(later_stage && scene_.density_gradient_once_per_step);
-  const std::vector<LevelSpan<D>> levels = this->levels();
+  std::vector<LevelSpan<D>> levels = this->levels();
+  if (eval_level_ >= 0) levels = {levels[eval_level_]};  // local time stepping: one level's step
   for (const LevelSpan<D>& L : levels) {
     if (L.active_end == L.first) continue;
     const auto range = Kokkos::RangePolicy<ExecSpace>(L.first, L.active_end);

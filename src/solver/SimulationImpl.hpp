@@ -5,4 +5,5 @@
 #include "solver/SimulationLists.hpp"
 #include "solver/SimulationEvaluate.hpp"
 #include "solver/SimulationStep.hpp"
+#include "solver/SimulationLocalSteps.hpp"
 #include "solver/SimulationOutput.hpp"

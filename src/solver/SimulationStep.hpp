@@ -3,6 +3,7 @@
 // midpoint) with the step hooks' points (solver/StepHook.hpp), and the state check that stops
 // a blown-up run. Included by SimulationImpl.hpp only.
 #include <cmath>
+#include <limits>
 
 #include "kernels/TimeStep.hpp"
 #include "solver/BlowUpCheck.hpp"
@@ -13,32 +14,35 @@
 namespace ondine {
 
 template <int D>
-double Simulation<D>::time_step() const {
-  const int n = n_own_;
+double Simulation<D>::time_step(const int only) const {
+  // only >= 0 (local time stepping): that level's SPH particles and radius; otherwise every
+  // owned particle and one global step, bounded by the finest level that has SPH particles
+  // (on any rank)
+  const std::vector<LevelSpan<D>> levels = this->levels();
+  const int first = only >= 0 ? levels[only].first : 0, end = only >= 0 ? levels[only].active_end : n_own_;
   const auto rho = p_.get(field::Density{});
   const auto du = p_.get(field::Acceleration{});
   double cmax = 0, a2max = 0;
   with_eos<D>(scene_, [&](auto eos) {
-    Kokkos::parallel_reduce("ondine::TimeStep::sound_speed", Kokkos::RangePolicy<ExecSpace>(0, n),
+    Kokkos::parallel_reduce("ondine::TimeStep::sound_speed", Kokkos::RangePolicy<ExecSpace>(first, end),
                             MaxSoundSpeed<D, decltype(eos)>{eos, rho}, Kokkos::Max<double>(cmax));
   });
-  Kokkos::parallel_reduce("ondine::TimeStep::acceleration", Kokkos::RangePolicy<ExecSpace>(0, n),
+  Kokkos::parallel_reduce("ondine::TimeStep::acceleration", Kokkos::RangePolicy<ExecSpace>(first, end),
                           MaxNorm2<D, std::decay_t<decltype(du)>>{du}, Kokkos::Max<double>(a2max));
   cmax = comm().max(cmax);
   a2max = comm().max(a2max);
-  // one global step, bounded by the finest level that has SPH particles (on any rank)
-  const std::vector<LevelSpan<D>> levels = this->levels();
+  if (only >= 0 && !(cmax > 0)) return std::numeric_limits<double>::infinity();  // no SPH particle of the level on any rank
   std::int64_t finest = 0;
   for (const LevelSpan<D>& L : levels)
     if (L.active_end > L.first) finest = L.level;
-  const double R = levels.size() == 1 ? levels[0].R : levels[comm().max(finest)].R;
+  const double R = only >= 0 ? levels[only].R : levels.size() == 1 ? levels[0].R : levels[comm().max(finest)].R;
   double dt = scene_.cfl_acoustic * R / cmax;
   // with a turbulence model the largest nu + nu_T bounds the viscous step (2.103) and, as the wall
   // function's stress u_*^2 = nu_eff u_t / y with nu_eff of the order of nu_T there, the wall term's
   double nu_max = scene_.nu;
   if (scene_.turbulence.eddy_viscous()) {
     double nu_T = 0;
-    Kokkos::parallel_reduce("ondine::TimeStep::eddy_viscosity", Kokkos::RangePolicy<ExecSpace>(0, n),
+    Kokkos::parallel_reduce("ondine::TimeStep::eddy_viscosity", Kokkos::RangePolicy<ExecSpace>(first, end),
                             MaxValue<std::decay_t<decltype(p_.get(field::EddyViscosity{}))>>{p_.get(field::EddyViscosity{})},
                             Kokkos::Max<double>(nu_T));
     nu_max += comm().max(nu_T);
@@ -48,6 +52,7 @@ double Simulation<D>::time_step() const {
   // the viscous wall term's stiffness, level by level
   if (!walls_.empty() && scene_.viscous_term != ViscousTerm::None)
     for (const LevelSpan<D>& L : levels) {
+      if (only >= 0 && L.level != only) continue;
       double kmax = scheme_.wall_stiffness(context(L));  // 0 on a rank without SPH particles of this level
       kmax = comm().max(kmax) * (scene_.nu > 0 ? nu_max / scene_.nu : 1.0);
       if (kmax > 0) dt = std::min(dt, 1.0 / kmax);
@@ -63,6 +68,7 @@ double Simulation<D>::step(double t_stop) {
   for (auto& h : hooks_) h->step_start(state);  // the refinement's last (hooks/StepHooks.hpp)
   for (auto& h : hooks_) h->after_lists(state);
   allocate_stage_storage(p_, scene_);
+  if (refinement_ && scene_.refinement_local_time_stepping) return step_local(t_stop);  // solver/SimulationLocalSteps.hpp
   Kokkos::deep_copy(p_.get(field::StagePosition{}), p_.get(field::Position{}));
   Kokkos::deep_copy(p_.get(field::StageVelocity{}), p_.get(field::Velocity{}));
   Kokkos::deep_copy(p_.get(field::StageDensity{}), p_.get(field::Density{}));
@@ -76,9 +82,7 @@ double Simulation<D>::step(double t_stop) {
   };
   stage_time_ = t_;
   evaluate();  // k1 at y0, also the state the time step is computed from
-  double dt = time_step();
-  if (t_ + dt > t_stop) dt = std::max(t_stop - t_, 1e-300);
-  else if (t_ + 1.5 * dt > t_stop) dt = 0.5 * (t_stop - t_);  // avoid a sliver step before t_stop
+  const double dt = capped_step(time_step(), t_stop);
 
   if (scene_.integrator == TimeIntegrator::RK4) {
     // classical RK4: y1 = y0 + dt/6 (k1 + 2 k2 + 2 k3 + k4)
@@ -100,7 +104,23 @@ double Simulation<D>::step(double t_stop) {
     evaluate(true);
     stage(dt, 0.0, false);
   }
-  // shifting, the impermeability guard, the start-up damping, ... (hooks/StepHooks.hpp)
+  finish_step(dt);
+  return dt;
+}
+
+// dt, shortened so that the step ends on t_stop without a sliver step before it
+template <int D>
+double Simulation<D>::capped_step(double dt, double t_stop) const {
+  if (t_ + dt > t_stop) return std::max(t_stop - t_, 1e-300);
+  if (t_ + 1.5 * dt > t_stop) return 0.5 * (t_stop - t_);
+  return dt;
+}
+
+// the step's end: the hooks' (shifting, the impermeability guard, the start-up damping, ...:
+// hooks/StepHooks.hpp), the state check, the clock
+template <int D>
+void Simulation<D>::finish_step(double dt) {
+  StepState<D> state(*this);
   for (auto& h : hooks_) h->step_end(state, dt);
   try {
     check_state(p_, n_own_, scene_, comm(), steps_, t_, dt);
@@ -111,7 +131,6 @@ double Simulation<D>::step(double t_stop) {
   t_ += dt;
   ++steps_;
   stage_time_ = t_;
-  return dt;
 }
 
 }  // namespace ondine

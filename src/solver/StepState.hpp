@@ -13,6 +13,9 @@ class StepState {
   const Scene& scene() const { return sim_.scene_; }
   const Communicator& comm() const { return sim_.comm(); }
   double time() const { return sim_.t_; }
+  // the time of the state being evaluated or just integrated (a stage's; with local time
+  // stepping the end of a level's step inside the coarse one)
+  double stage_time() const { return sim_.stage_time_; }
   std::int64_t steps() const { return sim_.steps_; }
   ParticleSet<D>& particles() { return sim_.p_; }
   int owned() const { return sim_.n_own_; }

@@ -85,11 +85,14 @@ class Refinement final : public StepHook<D> {
   void refresh_halo_roles(StepState<D>& s) { s.domain().refresh(s.particles(), field::AprBirthLevel{}, field::AprGuard{}); }
 
   // Each stage: the guards from this stage's SPH particles (5.24), and on several ranks
-  // their halo copies (their density gradient travels after the gradient pass).
-  void interpolate_guards(StepState<D>& s) {
-    apr_.interpolate(s.particles(), s.domain().box(), false, s.walls().near_facets());
+  // their halo copies (their density gradient travels after the gradient pass); `only` >= 0:
+  // the guards of that level only (local time stepping).
+  void interpolate_guards(StepState<D>& s, int only = -1) {
+    apr_.interpolate(s.particles(), s.domain().box(), false, s.walls().near_facets(), only);
     s.domain().refresh(s.particles(), field::Velocity{}, field::Density{});
   }
+  // local time stepping: a new step of `level`, its guards' shape functions at its positions
+  void level_step_start(int level) { apr_.invalidate_weights(level); }
 
   // An output: the guards of the stored state (5.24), the run's own kept and put back after
   // it (restore_after_output), so that an output never changes the run.
