@@ -31,6 +31,7 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, std::i
     f.attribute("refinement_families_moved", a.families_moved);
     f.attribute("refinement_guard_shifts", a.guard_shifts);
     f.attribute("refinement_guards_limited", a.guards_limited);
+    if (!a.level_steps.empty()) f.attribute("refinement_level_steps", a.level_steps);
     f.attribute("refinement_momentum_change", std::vector<double>(a.momentum_change, a.momentum_change + 3));
     f.attribute("refinement_momentum_scale", a.momentum_scale);
     f.attribute("refinement_zone_offset", a.offset);
@@ -89,6 +90,7 @@ CheckpointSlice read_checkpoint(const std::string& path, const Communicator& com
       a.families_moved = r.has("refinement_families_moved") ? r.attribute_int("refinement_families_moved") : 0;
       a.guard_shifts = r.has("refinement_guard_shifts") ? r.attribute_int("refinement_guard_shifts") : 0;
       a.guards_limited = r.has("refinement_guards_limited") ? r.attribute_int("refinement_guards_limited") : 0;
+      if (r.has("refinement_level_steps")) a.level_steps = r.attribute_doubles("refinement_level_steps");
       const std::vector<double> dp = r.attribute_doubles("refinement_momentum_change");
       if (dp.size() != 3) throw CheckpointError(path + ": attribute 'refinement_momentum_change' does not have 3 values");
       for (int k = 0; k < 3; ++k) a.momentum_change[k] = dp[k];

@@ -34,6 +34,7 @@ struct CheckpointRefinement {
   std::int64_t families_moved = 0;    // families moved off a wall since t = 0 (DaughterWallClearance)
   std::int64_t guard_shifts = 0;      // daughter guards shifted since t = 0, all ranks (GuardSpacing)
   std::int64_t guards_limited = 0;    // guard interpolations limited since t = 0, all ranks (GuardApply)
+  std::vector<double> level_steps;    // local time stepping: the steps of each level since t = 0 (exact integers)
   double momentum_change[3] = {0, 0, 0};  // sum over refinements of sum_f m_f u_f - m_m u_m
   double momentum_scale = 0;              // sum over refinements of m_m |u_m|
   std::vector<double> offset;        // zones x 3: displacement of each zone from its case-file box (m)

@@ -185,7 +185,7 @@ nlohmann::json run_summary(const Scene& scene, const RunOptions& opt, const Simu
                        {"refined", apr.refined()},
                        {"deleted", apr.deleted()},
                        {"local_time_stepping", scene.refinement_local_time_stepping}};
-    // the steps each level took (this process; with local time stepping level l takes 2^l per coarse step)
+    // with local time stepping, the steps each level took since t = 0 (2^l per coarse step where it has particles)
     if (!sim.level_steps().empty()) j["refinement"]["level_steps"] = sim.level_steps();
   }
   if (const auto* open = sim.template find_hook<OpenBoundaryStep<D>>()) {

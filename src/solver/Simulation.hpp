@@ -122,7 +122,7 @@ class Simulation {
   // adaptive particle refinement (only with refinement zones; hooks/Refinement.hpp, docs/apr.md)
   bool refinement_on() const { return refinement_ != nullptr; }
   const AdaptiveRefinement<D>& refinement() const;
-  // local time stepping: the steps each level has taken since this process started (empty without it)
+  // local time stepping: the steps each level has taken since t = 0 (empty without it)
   const std::vector<std::int64_t>& level_steps() const { return level_steps_; }
 
  private:
@@ -163,7 +163,7 @@ class Simulation {
   std::vector<std::unique_ptr<StepHook<D>>> hooks_;  // in the order their points run
   Refinement<D>* refinement_ = nullptr;  // the refinement hook (one of hooks_), with refinement zones
   int eval_level_ = -1;  // local time stepping: the one level evaluate() passes over (-1: all)
-  std::vector<std::int64_t> level_steps_;  // local time stepping: steps each level has taken
+  std::vector<std::int64_t> level_steps_;  // local time stepping: steps each level has taken since t = 0
 };
 
 // An output instant of a simulation, as a scope: while the frame lives, the simulation's

@@ -99,6 +99,8 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
     initial_.mass = restart->header.initial_mass;
     for (int k = 0; k < 3; ++k) initial_.momentum[k] = restart->header.initial_momentum[k];
     if (walls_.moving()) update_walls(t_);
+    if (scene_.refinement_local_time_stepping)
+      for (const double n : restart->header.refinement.level_steps) level_steps_.push_back(static_cast<std::int64_t>(n));
   }
 }
 

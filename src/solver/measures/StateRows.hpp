@@ -34,6 +34,7 @@ CheckpointRefinement refinement_state(const Simulation<D>& sim) {
   sim.refinement().save_state(c);
   c.guard_shifts = sim.comm().sum(sim.refinement().guard_shifts());  // a global count (each rank counts its own)
   c.guards_limited = sim.comm().sum(sim.refinement().guards_limited());
+  for (const std::int64_t n : sim.level_steps()) c.level_steps.push_back(static_cast<double>(n));
   c.checksum = refinement_checksum(sim);
   return c;
 }
