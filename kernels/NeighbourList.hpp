@@ -46,6 +46,22 @@ struct MaxDisplacement2 {
   }
 };
 
+// The same with a skin per refinement level (local time stepping): max_i of the displacement
+// over the half skin of particle i's birth level, squared; the lists hold while it is below 1.
+template <int D>
+struct MaxScaledDisplacement2 {
+  using value_type = double;
+  static constexpr int max_levels = 8;
+  PeriodicBox<D> box;
+  field_view_t<field::Position, D> x, x_build;
+  Kokkos::View<int*, MemSpace> birth;
+  double inv_half_skin2[max_levels];
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, double& mx) const {
+    const double d2 = norm2(box.delta(load<D>(x, i), load<D>(x_build, i))) * inv_half_skin2[birth(i)];
+    if (d2 > mx) mx = d2;
+  }
+};
+
 template <int D>
 struct NeighbourList {
   Kokkos::View<int*, MemSpace> offsets;     // n + 1

@@ -98,7 +98,8 @@ def report_md(record, figures):
                   f"{fmt(r.get('particle_steps_per_second', 0))} | {errors_text(r)} | {'yes' if r['passed'] else '**no**'} |")
     md.append("")
     md += schemes_md(runs)
-    ratios = ("near_wall_error_over_fine", "wall_time_over_fine", "cpu_time_over_fine", "probe_pressure_difference_vs_fine")
+    ratios = ("near_wall_error_over_fine", "wall_time_over_fine", "cpu_time_over_fine", "probe_pressure_difference_vs_fine",
+              "cpu_time_over_global_step")
     for r in runs:
         if r.get("variant") and r["variant"] != "fine" and any(k in r["errors"] for k in ratios):
             md += [f"{r['case']} / {r['variant']} ({scheme_label(r)}, {r.get('level', 'full')}) against fine: "

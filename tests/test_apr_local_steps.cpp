@@ -213,8 +213,7 @@ TEST_CASE("Local time stepping: bad input names the file, line and key", "[unit]
     return std::string();
   };
   CHECK(error_of("delta_sph: 0.1", "true").empty());
-  CHECK_THAT(error_of("delta_sph: 0.1", "often"), Catch::Contains("lts.yaml:9:") && Catch::Contains("refinement.local_time_stepping"));
-  CHECK_THAT(error_of("delta_sph: 0.1, transport: shifting", "true"),
-             Catch::Contains("lts.yaml:9:") && Catch::Contains("refinement.local_time_stepping") && Catch::Contains("shifting"));
-  CHECK(error_of("delta_sph: 0.1, transport: shifting", "false").empty());
+  CHECK(error_of("delta_sph: 0.1, transport: shifting", "true").empty());
+  CHECK_THAT(error_of("delta_sph: 0.1", "often"), Catch::Contains("lts.yaml:9:") && Catch::Contains("refinement.local_time_stepping") &&
+                                                  Catch::Contains("expected true or false"));
 }

@@ -28,7 +28,10 @@ struct LevelVisitor {
   field_view_t<field::AprBirthLevel, D> birth;
   field_view_t<field::AprGuard, D> guard;
   field_view_t<field::AprMother, D> mother;
-  double cut2[kAprMaxLevels];  // (R_l + skin)^2
+  double cut2[kAprMaxLevels];  // (R_l + skin_l)^2
+  // Lx: a guard of level r and its sources, (R + the mean of the two levels' skins)^2 with R its
+  // interpolation radius: a mother guard's R_{r+1}, a daughter guard's (at most) R_{r-1}
+  double mother_cut2[kAprMaxLevels], daughter_cut2[kAprMaxLevels];
 
   template <class F>
   KOKKOS_INLINE_FUNCTION void operator()(const int i, F&& f) const {
@@ -36,7 +39,7 @@ struct LevelVisitor {
     const int r = birth(i);
     // a mother guard interpolates at its daughters' radius; a daughter guard at its own,
     // or at its mother's where its own holds too few sources (GuardInterpolation.hpp)
-    const double c2 = !Guards ? cut2[r] : mother(i) == 1 ? cut2[r + 1] : cut2[r > 0 ? r - 1 : 0];
+    const double c2 = !Guards ? cut2[r] : mother(i) == 1 ? mother_cut2[r] : daughter_cut2[r];
     const Vec<D> xi = load<D>(x, i);
     int home[D];
     for (int k = 0; k < D; ++k) home[k] = g.coord(xi[k], k);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <algorithm>
 #include <map>
 #include <sstream>
@@ -233,6 +234,14 @@ std::map<std::string, double> run_rung(const ValidateOptions& opt, const Validat
   run["particle_steps_per_second"] = rep.wall_seconds > 0 ? rep.particles * static_cast<double>(rep.steps) / rep.wall_seconds : 0.0;
   run["errors"] = rep.errors;
   run["status"] = rep.status;
+  // with refinement zones: each level's SPH particles x steps, and with local time stepping each level's steps
+  {
+    std::ifstream in(opt.out_dir + "/" + rel + "/summary.json");
+    const nlohmann::json sj = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+    if (sj.is_object() && sj.contains("level_particle_steps")) run["level_particle_steps"] = sj["level_particle_steps"];
+    if (sj.is_object() && sj.contains("refinement") && sj["refinement"].contains("level_steps"))
+      run["level_steps"] = sj["refinement"]["level_steps"];
+  }
   if (!rep.message.empty()) run["message"] = rep.message;
   nlohmann::json th = nlohmann::json::object();
   std::string errs = rep.status == "completed" ? "" : "**" + rep.status + "** " + rep.message + "; ";

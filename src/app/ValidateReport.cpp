@@ -161,7 +161,8 @@ void compare_run_with_fine(const ValidateOptions& opt, const ValidationCase& c, 
   }
   std::ostringstream& md = report.md;
   md << "\n" << c.name << " / " << run["variant"].get<std::string>() << " against fine:";
-  for (const char* k : {"near_wall_error_over_fine", "wall_time_over_fine", "cpu_time_over_fine", "probe_pressure_difference_vs_fine"})
+  for (const char* k : {"near_wall_error_over_fine", "wall_time_over_fine", "cpu_time_over_fine", "probe_pressure_difference_vs_fine",
+                        "cpu_time_over_global_step"})
     if (e.contains(k)) md << " " << k << " " << fmt(e[k].get<double>()) << ";";
   if (!criterion) md << " **fails** (near_wall_error_over_fine <= 1.1 and " << time_ratio << " <= 0.7)";
   md << "\n";
@@ -244,6 +245,15 @@ void compare_with_fine(const ValidateOptions& opt, const ValidationCase& c, Repo
   nlohmann::json* fine = nullptr;
   for (auto& run : j["runs"])
     if (run["case"] == c.name && run.value("variant", "") == "fine") fine = &run;
+  // a run with local time stepping (variant X_lts) against the same refined run with one global step (X)
+  for (auto& run : j["runs"]) {
+    const std::string v = run.value("variant", "");
+    if (run["case"] != c.name || v.size() < 5 || v.compare(v.size() - 4, 4, "_lts") != 0) continue;
+    for (const auto& base : j["runs"])
+      if (base["case"] == c.name && base.value("variant", "") == v.substr(0, v.size() - 4) && base.value("cpu_seconds", 0.0) > 0 &&
+          run.contains("cpu_seconds"))
+        run["errors"]["cpu_time_over_global_step"] = run["cpu_seconds"].get<double>() / base["cpu_seconds"].get<double>();
+  }
   if (fine && (*fine)["status"] == "completed") {
     for (auto& run : j["runs"]) {
       if (run["case"] != c.name || run.value("variant", "") == "fine") continue;

@@ -24,6 +24,8 @@ const std::vector<ValidationCase>& catalogue() {
   static const std::vector<std::string> first_impact_shown = {"P1_peak_relative_error", "P1_probe_peak_relative_error",
       "P1_peak_time_error", "P1_impulse_relative_error", "P1_probe_impulse_relative_error", "P3_peak_relative_error",
       "P3_probe_peak_relative_error", "P3_impulse_relative_error", "H2_rms_error", "H4_rms_error", "wall_leaks", "wall_corrections"};
+  // an APR rung with local time stepping (refinement.local_time_stepping: each level its own step)
+  static const std::string lts = "refinement.local_time_stepping=true";
   // the 2D first-impact runs: the 3D case's c0 and R/dx on the centre plane, to 0.6 s, no snapshots
   static const std::vector<std::string> first_impact_2d_sets = {"fluid.sound_speed=40", "discretisation.R_over_dx=2.5",
                                                                 "time.duration=0.6", "time.snapshot_every=1000000"};
@@ -239,18 +241,21 @@ const std::vector<ValidationCase>& catalogue() {
        {{"non_finite", 0.5}, {"max_density_deviation", 0.1}, {"momentum_balance_error", 1e-10}},
        {"fluid.mach=0.3", "time.duration=1.0"}},
       // Adaptive particle refinement (`--case apr`; docs/apr.md): coarse uniform, APR and fine
-      // uniform runs of one case. Poiseuille Re = 1 (thesis Table 5.3), refinement bands 0.2 L along
+      // uniform runs of one case, and the APR run with local time stepping (apr_lts: each level its
+      // own step). Poiseuille Re = 1 (thesis Table 5.3), refinement bands 0.2 L along
       // both walls, to t = 2 s (quick: 0.5 s); the near-wall error (particles whose support the walls
       // cut) and the wall time of the APR run over the fine run's are added to the APR run's figures.
       {"apr_poiseuille_re1_2d", "cases/poiseuille_re1_2d.yaml", 1.0,
-       {{0.025, false, true, "coarse"}, {0.025, false, true, "apr", "cases/poiseuille_re1_apr_2d.yaml"}, {0.0125, false, true, "fine"}},
+       {{0.025, false, true, "coarse"}, {0.025, false, true, "apr", "cases/poiseuille_re1_apr_2d.yaml"},
+        {0.025, false, true, "apr_lts", "cases/poiseuille_re1_apr_2d.yaml", {lts}}, {0.0125, false, true, "fine"}},
        stable({{"velocity_l2_near_wall", 0.0135}, {"velocity_l2", 0.005}}), {}, {}, {"near_wall_error_over_fine", "wall_time_over_fine", "cpu_time_over_fine"},
        {"time.duration=0.5", "time.output_interval=0.25"}},
       // 2D dam break with a refinement box at the foot of the right wall, where the surge hits it
       // (to t = 0.35 s; quick: 0.25 s): the front against Martin & Moyce, and the pressure at the
       // right-wall probe against the fine run's (relative L2 over time)
       {"apr_dam_break_2d", "cases/dam_break_impact_2d.yaml", 0.05715,
-       {{0.002286, false, true, "coarse"}, {0.002286, false, true, "apr", "cases/dam_break_apr_2d.yaml"}, {0.001143, false, true, "fine"}},
+       {{0.002286, false, true, "coarse"}, {0.002286, false, true, "apr", "cases/dam_break_apr_2d.yaml"},
+        {0.002286, false, true, "apr_lts", "cases/dam_break_apr_2d.yaml", {lts}}, {0.001143, false, true, "fine"}},
        stable({{"front_max_relative_error", 0.2}}), {}, {}, {"probe_pressure_difference_vs_fine", "wall_time_over_fine", "cpu_time_over_fine"},
        {"time.duration=0.25"}},
       // The thesis' 2D Kleefsman dam break (§5.6, Table 5.2): coarse (dx = 0.005 m), refined
@@ -274,7 +279,9 @@ const std::vector<ValidationCase>& catalogue() {
       // uniform H/220 run is fine_first_impact_2d's. Shown, not bounded
       {"apr_first_impact_2d", "cases/kleefsman_2d.yaml", 0.55,
        {{0.01, false, true, "coarse"}, {0.01, false, true, "apr", "cases/kleefsman_impact_apr_2d.yaml"},
-        {0.005, true, true, "apr_h440", "cases/kleefsman_impact_apr_2d.yaml"}},
+        {0.01, false, true, "apr_lts", "cases/kleefsman_impact_apr_2d.yaml", {lts}},
+        {0.005, true, true, "apr_h440", "cases/kleefsman_impact_apr_2d.yaml"},
+        {0.005, true, true, "apr_h440_lts", "cases/kleefsman_impact_apr_2d.yaml", {lts}}},
        stable({{"wall_crossings", 0.5}}),
        first_impact_2d_sets, {},
        first_impact_shown},

@@ -187,6 +187,10 @@ nlohmann::json run_summary(const Scene& scene, const RunOptions& opt, const Simu
                        {"local_time_stepping", scene.refinement_local_time_stepping}};
     // with local time stepping, the steps each level took since t = 0 (2^l per coarse step where it has particles)
     if (!sim.level_steps().empty()) j["refinement"]["level_steps"] = sim.level_steps();
+    // the SPH particles of each level times the steps they took, over this process's steps
+    std::vector<double> work;
+    for (const double w : sim.level_particle_steps()) work.push_back(comm.sum(w));
+    j["level_particle_steps"] = work;
   }
   if (const auto* open = sim.template find_hook<OpenBoundaryStep<D>>()) {
     // open boundaries: what crossed each plane (kg since t = 0) and the particles created and removed

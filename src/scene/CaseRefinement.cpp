@@ -149,12 +149,8 @@ void read_refinement(const Reader& r, YAML::Node& root, Scene& s) {
       r.fail(ref, "refinement", "scheme.flux: riemann with refinement zones is not supported yet (the guards' velocity gradients of the MUSCL reconstruction are not interpolated); use delta_sph");
     if (s.renormalised_continuity)
       r.fail(ref, "refinement", "scheme.renormalised_continuity with refinement zones is not supported (the per-level flux does not run it)");
-    if (ref["local_time_stepping"]) {
+    if (ref["local_time_stepping"])
       s.refinement_local_time_stepping = r.boolean(ref["local_time_stepping"], "refinement.local_time_stepping");
-      if (s.refinement_local_time_stepping && s.shifting)
-        r.fail(ref["local_time_stepping"], "refinement.local_time_stepping",
-               "is not built with scheme.transport: shifting (the shift runs once per step on every particle, and a fine level takes several steps per coarse one); use lagrangian");
-    }
     read_zones(r, r.required(ref, "refinement", "zones"), "refinement.zones", 1, -1, s);
     check_block_seams(r, root, s);
   }

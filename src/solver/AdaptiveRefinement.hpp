@@ -34,7 +34,10 @@ template <int D>
 class AdaptiveRefinement {
  public:
   AdaptiveRefinement() = default;
-  AdaptiveRefinement(const Scene& s, const PeriodicBox<D>& box, double skin) : scene_zones_(s.refinement_zones), kernel_(s.kernel), skin_(skin) {
+  // `level_skins`: a Verlet skin per level (local time stepping), or empty: `skin` for every level
+  AdaptiveRefinement(const Scene& s, const PeriodicBox<D>& box, double skin, const std::vector<double>& level_skins = {})
+      : scene_zones_(s.refinement_zones), kernel_(s.kernel), skin_(skin) {
+    for (int l = 0; l < kAprMaxLevels; ++l) skins_[l] = l < static_cast<int>(level_skins.size()) ? level_skins[l] : skin;
     zones_.count = static_cast<int>(s.refinement_zones.size());
     zones_.max_level = s.max_refinement_level();
     zones_.box = box;
@@ -42,7 +45,7 @@ class AdaptiveRefinement {
       zones_.R[l] = s.R() / std::ldexp(1.0, l);
       zones_.dx[l] = s.dx / std::ldexp(1.0, l);
       zones_.layer[l] = l == 0 ? 0.0 : s.refinement_transition * zones_.R[l - 1];
-      zones_.passive[l] = zones_.R[l] + 2.0 * skin;
+      zones_.passive[l] = zones_.R[l] + 2.0 * skins_[l];
     }
     offset_.assign(scene_zones_.size(), Vec3{0, 0, 0});
     place_zones();
@@ -310,11 +313,17 @@ class AdaptiveRefinement {
   void build_lists(const ParticleSet<D>& p, const CellList<D>& cells, const PeriodicBox<D>& box, int n, bool reset_wide = true) {
     apr::LevelVisitor<D, false> dot{cells.grid, box, cells.cell_start, cells.sorted, p.get(field::Position{}),
                                     p.get(field::AprBirthLevel{}), p.get(field::AprGuard{}), p.get(field::AprMother{}), {}};
-    for (int l = 0; l < kAprMaxLevels; ++l) dot.cut2[l] = (zones_.R[l] + skin_) * (zones_.R[l] + skin_);
+    for (int l = 0; l < kAprMaxLevels; ++l) dot.cut2[l] = (zones_.R[l] + skins_[l]) * (zones_.R[l] + skins_[l]);
     apr::build_list<D, false>(l_dot_, dot, n, "SymmetricList");
     apr::LevelVisitor<D, true> cross{cells.grid, box, cells.cell_start, cells.sorted, p.get(field::Position{}),
                                      p.get(field::AprBirthLevel{}), p.get(field::AprGuard{}), p.get(field::AprMother{}), {}};
-    for (int l = 0; l < kAprMaxLevels; ++l) cross.cut2[l] = dot.cut2[l];
+    for (int l = 0; l < kAprMaxLevels; ++l) {
+      cross.cut2[l] = dot.cut2[l];
+      const int f = l + 1 < kAprMaxLevels ? l + 1 : l, c = l > 0 ? l - 1 : 0;
+      const double rm = zones_.R[f] + 0.5 * (skins_[l] + skins_[f]), rd = zones_.R[c] + 0.5 * (skins_[l] + skins_[c]);
+      cross.mother_cut2[l] = rm * rm;
+      cross.daughter_cut2[l] = rd * rd;
+    }
     apr::build_list<D, true>(l_cross_, cross, n, "GuardList");
     if (psi_.extent(0) < l_cross_.neighbours.extent(0))
       psi_ = Kokkos::View<double**, Kokkos::LayoutRight, MemSpace>("ondine::APR::guard_weights", l_cross_.neighbours.extent(0), D + 1);
@@ -433,6 +442,7 @@ private:
   RefinementZones<D> zones_;
   KernelType kernel_ = KernelType::WendlandC2;
   double skin_ = 0;
+  double skins_[kAprMaxLevels] = {};  // each level's Verlet skin (skin_ unless local time stepping)
   int levels_ = 1;
   std::vector<int> first_, active_end_, guard_end_, end_;
   NeighbourList<D> l_dot_, l_cross_;

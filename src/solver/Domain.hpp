@@ -48,6 +48,10 @@ class Domain {
   const PeriodicBox<D>& local_box() const { return local_box_; }
   double cutoff() const { return cutoff_; }
   double skin() const { return skin_; }
+  // refinement zones with local time stepping: a Verlet skin per level (neighbour_skin dx_l; the
+  // cells then hold R + the coarse level's skin); empty: skin() for every particle
+  void set_level_skins(std::vector<double> skins) { level_skins_ = std::move(skins); }
+  const std::vector<double>& level_skins() const { return level_skins_; }
   const CellList<D>& cells() const { return cells_; }
   const NeighbourList<D>& list() const { return list_; }
   // scheme.pair_list: half: each pair of owned particles once (kernels/SymmetricFluxPass.hpp); empty otherwise
@@ -62,8 +66,18 @@ class Domain {
   std::int64_t builds() const { return builds_; }
   // Verlet criterion: the lists still hold every pair within R while no particle (on any
   // rank) has moved more than skin/2 since the last build
-  bool lists_hold(const field_view_t<field::Position, D>& x, int n) const {
+  // (with level skins and the particles' birth levels: each within half its level's skin)
+  bool lists_hold(const field_view_t<field::Position, D>& x, int n, const Kokkos::View<int*, MemSpace>& birth = {}) const {
     if (!list_valid_ || skin_ <= 0) return false;
+    if (!level_skins_.empty() && birth.extent(0) >= static_cast<std::size_t>(n)) {
+      MaxScaledDisplacement2<D> f{box_, x, x_at_build_, birth, {}};
+      for (std::size_t l = 0; l < level_skins_.size() && l < MaxScaledDisplacement2<D>::max_levels; ++l)
+        f.inv_half_skin2[l] = 4.0 / (level_skins_[l] * level_skins_[l]);
+      double s2max = 0;
+      Kokkos::parallel_reduce("ondine::NeighbourList::level_displacement", Kokkos::RangePolicy<ExecSpace>(0, n), f,
+                              Kokkos::Max<double>(s2max));
+      return comm_.max(s2max) < 1.0;
+    }
     double d2max = 0;
     Kokkos::parallel_reduce("ondine::NeighbourList::displacement", Kokkos::RangePolicy<ExecSpace>(0, n),
                             MaxDisplacement2<D>{box_, x, x_at_build_}, Kokkos::Max<double>(d2max));
@@ -187,6 +201,7 @@ class Domain {
   Communicator comm_;
   PeriodicBox<D> box_, local_box_;
   double cutoff_ = 0, skin_ = 0;
+  std::vector<double> level_skins_;
   // global grid, this rank's grid (own cells + halo ring)
   CellGrid<D> global_grid_, local_grid_;
   Decomposition decomposition_;

@@ -124,6 +124,9 @@ class Simulation {
   const AdaptiveRefinement<D>& refinement() const;
   // local time stepping: the steps each level has taken since t = 0 (empty without it)
   const std::vector<std::int64_t>& level_steps() const { return level_steps_; }
+  // with refinement zones: the sum over this process's steps of each level's SPH particles
+  // (this rank's) that took the step, the work each level cost
+  const std::vector<double>& level_particle_steps() const { return level_particle_steps_; }
 
  private:
   template <int>
@@ -164,6 +167,8 @@ class Simulation {
   Refinement<D>* refinement_ = nullptr;  // the refinement hook (one of hooks_), with refinement zones
   int eval_level_ = -1;  // local time stepping: the one level evaluate() passes over (-1: all)
   std::vector<std::int64_t> level_steps_;  // local time stepping: steps each level has taken since t = 0
+  std::vector<double> level_particle_steps_;  // with zones: SPH particles x steps, per level (this rank, this process)
+  void count_particle_steps(int level);  // level < 0: every level (a global step)
 };
 
 // An output instant of a simulation, as a scope: while the frame lives, the simulation's

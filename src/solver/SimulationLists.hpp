@@ -22,7 +22,8 @@ std::vector<LevelSpan<D>> Simulation<D>::levels() const {
 // steps (dam break run-up: mother guards 2 dx_m above their zone; docs/apr.md).
 template <int D>
 void Simulation<D>::ensure_neighbours() {
-  if (domain_.lists_hold(p_.get(field::Position{}), n_own_)) return;
+  const Kokkos::View<int*, MemSpace> birth = p_.has(field::AprBirthLevel{}) ? p_.get(field::AprBirthLevel{}) : Kokkos::View<int*, MemSpace>();
+  if (domain_.lists_hold(p_.get(field::Position{}), n_own_, birth)) return;
   rebuild_lists(false, true);
   if (refinement_) refinement_->bookkeeping_due();
 }

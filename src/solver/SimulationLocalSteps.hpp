@@ -133,11 +133,12 @@ void Simulation<D>::advance_level(const int l, const double t0, const double h, 
     stage(h, 0.0, false);
   }
   ++level_steps_[l];
+  count_particle_steps(l);
   stage_time_ = t0 + h;
   {
     StepState<D> state(*this);
     const auto [a, b] = all();
-    for (auto& hk : hooks_) hk->level_step_end(state, a, b, h);  // the impermeability guard
+    for (auto& hk : hooks_) hk->level_step_end(state, l, a, b, h);  // the impermeability guard, shifting
   }
   if (l + 1 >= depth) return;
   finer_state(false);

@@ -27,7 +27,15 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
   // the wall quadrature's spacing; with zones in 2D every level's walls at the finest level's
   // dx / 4 (3D: each level at its own spacing, hooks/Refinement.hpp)
   wall_spacing_ = wall_quadrature_spacing<D>(scene, apr_on && D == 2 ? dx_finest : scene.dx);
-  domain_ = Domain<D>(scene_, R_ + skin_len_, skin_len_);
+  // with local time stepping each level has its own skin, neighbour_skin dx_l: a level-l particle
+  // moves 2^l times as far in a coarse step as a finest one (the cells hold R + the coarse skin)
+  const bool level_skins = apr_on && scene.refinement_local_time_stepping;
+  domain_ = Domain<D>(scene_, R_ + (level_skins ? scene.neighbour_skin * scene.dx : skin_len_), skin_len_);
+  if (level_skins) {
+    std::vector<double> skins;
+    for (int l = 0; l <= scene.max_refinement_level(); ++l) skins.push_back(scene.neighbour_skin * scene.dx / std::ldexp(1.0, l));
+    domain_.set_level_skins(skins);
+  }
   // this rank's share of the lattice or of the checkpoint; migrate() then sends
   // every particle to the owner of its cell
   const std::int64_t lattice = count_particles(scene);

@@ -105,7 +105,16 @@ double Simulation<D>::step(double t_stop) {
     stage(dt, 0.0, false);
   }
   finish_step(dt);
+  if (refinement_) count_particle_steps(-1);
   return dt;
+}
+
+template <int D>
+void Simulation<D>::count_particle_steps(const int level) {
+  const std::vector<LevelSpan<D>> L = levels();
+  if (level_particle_steps_.size() != L.size()) level_particle_steps_.assign(L.size(), 0.0);
+  for (const LevelSpan<D>& s : L)
+    if (level < 0 || s.level == level) level_particle_steps_[s.level] += s.active_end - s.first;
 }
 
 // dt, shortened so that the step ends on t_stop without a sliver step before it

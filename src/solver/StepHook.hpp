@@ -54,9 +54,10 @@ class StepHook {
   virtual void shifted(StepState<D>&, const ShiftedState<D>&) {}
   // the step integrated over dt, before the state check
   virtual void step_end(StepState<D>&, double /*dt*/) {}
-  // local time stepping (refinement.local_time_stepping): one level's particles [first, end)
-  // integrated over their own step dt, inside the coarse step that step_end closes
-  virtual void level_step_end(StepState<D>&, int /*first*/, int /*end*/, double /*dt*/) {}
+  // local time stepping (refinement.local_time_stepping): the particles of `level` (its SPH
+  // particles and guards, [first, end) as sorted now) integrated over their own step dt, inside
+  // the coarse step that step_end closes
+  virtual void level_step_end(StepState<D>&, int /*level*/, int /*first*/, int /*end*/, double /*dt*/) {}
 
   // what the hook carries in a checkpoint's header (collective: global counters are summed)
   virtual void save(const Communicator&, CheckpointHeader&) const {}

@@ -21,7 +21,7 @@ class ImpermeabilityGuard final : public StepHook<D> {
   }
   // local time stepping: each level's path over its own step (its stage storage holds the
   // step's start), which ends at the stage time
-  void level_step_end(StepState<D>& s, int first, int end, double dt) override { check(s, first, end, s.stage_time() - dt, dt); }
+  void level_step_end(StepState<D>& s, int, int first, int end, double dt) override { check(s, first, end, s.stage_time() - dt, dt); }
   void save(const Communicator& comm, CheckpointHeader& h) const override { h.wall_corrections = corrections(comm); }
   // corrections since t = 0, all ranks
   std::int64_t corrections(const Communicator& comm) const { return comm.sum(corrections_); }

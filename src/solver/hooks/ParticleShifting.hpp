@@ -4,7 +4,8 @@
 // point (the open boundaries keep their buffers there), then copied back; at most 0.02 dx
 // per step (kernels/ShiftingPass.hpp). With refinement zones each level's SPH particles are
 // shifted with their level's radius, spacing and list (their level's SPH particles and
-// guards), at most 0.02 dx_l; guards are not shifted here (refinement.guard_shifting).
+// guards), at most 0.02 dx_l; guards are not shifted here (refinement.guard_shifting). With
+// local time stepping each level is shifted at the end of each of its own steps.
 #include <utility>
 #include <vector>
 
@@ -18,6 +19,13 @@ class ParticleShifting final : public StepHook<D> {
  public:
   const char* name() const override { return "particle_shifting"; }
   void step_end(StepState<D>& s, double) override {
+    if (!s.scene().refinement_local_time_stepping) shift(s, -1);
+  }
+  void level_step_end(StepState<D>& s, int level, int, int, double) override { shift(s, level); }
+
+ private:
+  // every level's SPH particles (only < 0) or those of level `only`
+  void shift(StepState<D>& s, int only) {
     ParticleSet<D>& p = s.particles();
     s.ensure_lists();
     s.domain().refresh_state_halos(p);
@@ -34,7 +42,8 @@ class ParticleShifting final : public StepHook<D> {
       rho_ = field_view_t<field::Density, D>("ondine::Shifting::rho", n);
     }
     // every level's shift from the state at the step's end (each level's SPH particles), then applied
-    const std::vector<LevelSpan<D>> levels = s.levels();
+    std::vector<LevelSpan<D>> levels = s.levels();
+    if (only >= 0) levels = {levels[only]};
     for (const LevelSpan<D>& L : levels)
       if (L.active_end > L.first) s.scheme().shifting(s.context(L), x_, u_, rho_, 0.02 * L.dx);
     for (const LevelSpan<D>& L : levels) {
@@ -48,7 +57,6 @@ class ParticleShifting final : public StepHook<D> {
     s.domain().halos_stale();
   }
 
- private:
   // the shifted state, copied back at once (the stage storage keeps the step's start for the
   // impermeability guard and the blow-up restore)
   field_view_t<field::Position, D> x_;

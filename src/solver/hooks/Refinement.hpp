@@ -53,7 +53,7 @@ class Refinement final : public StepHook<D> {
   // at each level's own spacing.
   void start(StepState<D>& s, const CheckpointSlice* restart) override {
     if (s.has_walls()) build_level_walls(s);
-    apr_ = AdaptiveRefinement<D>(s.scene(), s.domain().box(), s.domain().skin());
+    apr_ = AdaptiveRefinement<D>(s.scene(), s.domain().box(), s.domain().skin(), s.domain().level_skins());
     if (restart) {
       apr_.restore(s.particles(), s.owned(), restart->header.refinement);
       apr_.count_guard_shifts(s.comm().rank() == 0 ? restart->header.refinement.guard_shifts : 0);

@@ -51,7 +51,7 @@ void Refinement<D>::step_start(StepState<D>& s) {
     for (int k = 0; k < D; ++k) at[k] = all[win * (D + 1) + 1 + k];
     return true;
   });
-  if (bookkeeping_due_ || moved > 0.5 * s.domain().skin() || !s.domain().lists_hold(x, n)) bookkeeping(s);
+  if (bookkeeping_due_ || moved > 0.5 * s.domain().skin() || !s.domain().lists_hold(x, n, p.get(field::AprBirthLevel{}))) bookkeeping(s);
   // with refinement.guard_shifting: the daughter guards shifted towards a regular
   // arrangement, with refinement.mother_shifting the mother guards towards their
   // daughters' volume (kernels/apr/GuardSpacing.hpp), from fresh halo positions; the
