@@ -110,7 +110,7 @@ TEST_CASE("Local time stepping: a uniform flow crossing a refinement box stays u
   CHECK(mass <= 1e-12);
 }
 
-TEST_CASE("Local time stepping: the coarse state in time between a step's ends, the fine one extrapolated", "[unit][apr][lts]") {
+TEST_CASE("Local time stepping: the coarse state in time between a step's ends, the fine velocity and density extrapolated", "[unit][apr][lts]") {
   PeriodicBox<2> box{{0.0, 0.0}, {1.0, 1.0}, {true, false}};
   field_view_t<field::Position, 2> x("x", 1), x0("x0", 1), x1("x1", 1);
   field_view_t<field::Velocity, 2> u("u", 1), u0("u0", 1), u1("u1", 1);
@@ -148,13 +148,10 @@ TEST_CASE("Local time stepping: the coarse state in time between a step's ends, 
   CHECK(a[4] == Approx(1002.5).margin(1e-11));
   CHECK(c[0] == Approx(0.02).margin(1e-14));
   CHECK(c[4] == Approx(1010.0).margin(1e-11));
-  // the extrapolation from y1 by its rates: x + s u + s^2/2 du, u + s du, rho + s drho
-  apr::LevelTimeExtrapolation<2>{box, x, x1, u, u1, r, r1, du, dr, 0.01}.run(0, 1);
-  const auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), x);
+  // the extrapolation from y1 by its rates: u + s du, rho + s drho (positions stay)
+  apr::LevelTimeExtrapolation<2>{u, u1, r, r1, du, dr, 0.01}.run(0, 1);
   const auto hu = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), u);
   const auto hr = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), r);
-  CHECK(hx(0, 0) == Approx(0.02 + 0.03 + 0.5e-4 * 4.0).margin(1e-14));
-  CHECK(hx(0, 1) == Approx(0.6 - 0.02 - 0.5e-4 * 8.0).margin(1e-14));
   CHECK(hu(0, 0) == Approx(3.04).margin(1e-14));
   CHECK(hu(0, 1) == Approx(-2.08).margin(1e-14));
   CHECK(hr(0) == Approx(1010.5).margin(1e-11));

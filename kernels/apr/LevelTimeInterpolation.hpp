@@ -4,9 +4,10 @@
 // time of that level's stage. A coarser level has already taken its step: its state is
 // interpolated linearly in time between the step's start y0 (the integrator's stage storage)
 // and its end y1 (LevelEnd*), y0 + theta (y1 - y0), positions by their minimum-image
-// displacement. A finer level has not started: its state at the step's start y1 (kept in
-// LevelEnd*) is extrapolated by its rates there, x + s u + s^2/2 du/dt, u + s du/dt,
-// rho + s drho/dt. Not in the seeds.
+// displacement. A finer level has not started: its velocity and density at the step's start
+// (kept in LevelEnd*) are extrapolated by their rates there, u + s du/dt, rho + s drho/dt; its
+// positions stay (the guards' shape functions are those of the step's start, and a position
+// moved ahead by a coarse step would overrun the fine level's Verlet skin). Not in the seeds.
 #include "kernels/Fields.hpp"
 #include "kernels/PeriodicBox.hpp"
 
@@ -60,11 +61,9 @@ struct LevelTimeInterpolation {
   }
 };
 
-// y <- y1 + s dy/dt (positions to second order) over [first, end)
+// u <- u1 + s du/dt, rho <- rho1 + s drho/dt over [first, end)
 template <int D>
 struct LevelTimeExtrapolation {
-  PeriodicBox<D> box;
-  field_view_t<field::Position, D> x, x1;
   field_view_t<field::Velocity, D> u, u1;
   field_view_t<field::Density, D> rho, r1;
   field_view_t<field::Acceleration, D> du;
@@ -72,10 +71,7 @@ struct LevelTimeExtrapolation {
   double s;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
-    for (int k = 0; k < D; ++k) {
-      x(i, k) = box.wrap(x1(i, k) + s * u1(i, k) + 0.5 * s * s * du(i, k), k);
-      u(i, k) = u1(i, k) + s * du(i, k);
-    }
+    for (int k = 0; k < D; ++k) u(i, k) = u1(i, k) + s * du(i, k);
     rho(i) = r1(i) + s * drho(i);
   }
   void run(int first, int end) const {

@@ -6,8 +6,9 @@
 // particles (SPH particles and guards) and evaluates its own fluxes only; its guards are
 // interpolated (5.24) at each stage from the other levels' SPH particles at the stage's time
 // (kernels/apr/LevelTimeInterpolation.hpp): a coarser level, already at the end of its step,
-// interpolated linearly in time; a finer level, not yet started, extrapolated from the start
-// of this level's step by its rates there, and put back before its own steps. dt_0 = min over the levels of 2^l dt_l, dt_l the step (2.102)-(2.103) that
+// interpolated linearly in time; a finer level, not yet started, its velocity and density
+// extrapolated from the start of this level's step by their rates there, and put back before
+// its own steps. dt_0 = min over the levels of 2^l dt_l, dt_l the step (2.102)-(2.103) that
 // level l's own SPH particles allow. Included by SimulationImpl.hpp only.
 #include <cmath>
 #include <limits>
@@ -93,9 +94,7 @@ void Simulation<D>::advance_level(const int l, const double t0, const double h, 
     if (l + 1 >= depth) return;
     const std::vector<LevelSpan<D>> L = levels();
     for (int m = l + 1; m < depth; ++m)
-      apr::LevelTimeExtrapolation<D>{domain_.local_box(),
-                                     p_.get(field::Position{}), p_.get(field::LevelEndPosition{}),
-                                     p_.get(field::Velocity{}), p_.get(field::LevelEndVelocity{}),
+      apr::LevelTimeExtrapolation<D>{p_.get(field::Velocity{}), p_.get(field::LevelEndVelocity{}),
                                      p_.get(field::Density{}), p_.get(field::LevelEndDensity{}),
                                      p_.get(field::Acceleration{}), p_.get(field::DensityRate{}), tau - t0}
           .run(L[m].first, L[m].active_end);
