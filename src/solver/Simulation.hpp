@@ -199,7 +199,7 @@ class OutputFrame {
 // Shepard factor, at the stored state (solver/SimulationOutput.hpp); at output times, and after
 // shifting.
 template <int D>
-void update_free_surface(Simulation<D>& sim, bool flags = true);
+void update_free_surface(Simulation<D>& sim, bool flags = true, int only = -1);
 
 extern template class Simulation<2>;
 extern template class Simulation<3>;

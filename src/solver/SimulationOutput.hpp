@@ -40,9 +40,9 @@ OutputFrame<D>::~OutputFrame() {
 
 // The free-surface flag (4.86-4.87) of each level's SPH particles (flags: when asked), and
 // the Shepard factor of the walls at the stored state (guards included; a guard is no SPH
-// particle: no flag).
+// particle: no flag); `only` >= 0: that level's particles only.
 template <int D>
-void update_free_surface(Simulation<D>& sim, bool flags_asked) {
+void update_free_surface(Simulation<D>& sim, bool flags_asked, int only) {
   StepState<D> s(sim);
   ParticleSet<D>& p = s.particles();
   const bool flags = flags_asked && p.has(field::FreeSurface{});
@@ -53,6 +53,7 @@ void update_free_surface(Simulation<D>& sim, bool flags_asked) {
   }
   const auto x = p.get(field::Position{});
   for (const LevelSpan<D>& L : s.levels()) {
+    if (only >= 0 && L.level != only) continue;
     if (flags && L.end > L.active_end)
       Kokkos::deep_copy(Kokkos::subview(p.get(field::FreeSurface{}), std::make_pair(L.active_end, L.end)), 0.0);
     // gamma of every particle of the level, its guards included, even on a rank that holds

@@ -47,7 +47,8 @@ class StepState {
   bool has_walls() const { return !sim_.walls_.empty(); }
   const WallModel<D>& walls() const { return sim_.walls_; }
   void update_walls(double t) { sim_.update_walls(t); }
-  void update_free_surface() { ondine::update_free_surface(sim_); }
+  // (only >= 0: that level's particles, local time stepping)
+  void update_free_surface(int only = -1) { ondine::update_free_surface(sim_, true, only); }
   // the hooks' `shifted` point, for the hook that shifts
   void shifted(const ShiftedState<D>& s) {
     for (auto& h : sim_.hooks_) h->shifted(*this, s);

@@ -32,7 +32,7 @@ class ParticleShifting final : public StepHook<D> {
     // with a free surface possible: the flags (4.86)-(4.87) of this state, halos included, for
     // the surface particles' tangential shift
     if (p.has(field::FreeSurface{})) {
-      s.update_free_surface();
+      s.update_free_surface(only);
       s.domain().refresh(p, field::FreeSurface{});
     }
     const std::size_t n = p.size();
