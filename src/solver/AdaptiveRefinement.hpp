@@ -312,11 +312,11 @@ class AdaptiveRefinement {
   // the lists are rebuilt only to follow a migration, and the flags are put back).
   void build_lists(const ParticleSet<D>& p, const CellList<D>& cells, const PeriodicBox<D>& box, int n, bool reset_wide = true) {
     apr::LevelVisitor<D, false> dot{cells.grid, box, cells.cell_start, cells.sorted, p.get(field::Position{}),
-                                    p.get(field::AprBirthLevel{}), p.get(field::AprGuard{}), p.get(field::AprMother{}), {}};
+                                    p.get(field::AprBirthLevel{}), p.get(field::AprGuard{}), p.get(field::AprMother{}), {}, {}, {}};
     for (int l = 0; l < kAprMaxLevels; ++l) dot.cut2[l] = (zones_.R[l] + skins_[l]) * (zones_.R[l] + skins_[l]);
     apr::build_list<D, false>(l_dot_, dot, n, "SymmetricList");
     apr::LevelVisitor<D, true> cross{cells.grid, box, cells.cell_start, cells.sorted, p.get(field::Position{}),
-                                     p.get(field::AprBirthLevel{}), p.get(field::AprGuard{}), p.get(field::AprMother{}), {}};
+                                     p.get(field::AprBirthLevel{}), p.get(field::AprGuard{}), p.get(field::AprMother{}), {}, {}, {}};
     for (int l = 0; l < kAprMaxLevels; ++l) {
       cross.cut2[l] = dot.cut2[l];
       const int f = l + 1 < kAprMaxLevels ? l + 1 : l, c = l > 0 ? l - 1 : 0;
