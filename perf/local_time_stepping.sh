@@ -5,6 +5,7 @@
 # run: wall and CPU seconds, steps, each level's steps and SPH particle-steps
 # (summary.json level_particle_steps), list builds, and the case's error figures; the medians'
 # ratios (local over global). Writes perf/results/local-time-stepping-<date>.json.
+# (a case with a time-averaged reference needs --set reference.from=T, T < the duration)
 # usage: perf/local_time_stepping.sh [--case cases/cylinder_re100_apr_2d.yaml] [--duration 0.01]
 #                                    [--runs 1] [--set KEY=VALUE ...] [--out perf/results]
 set -euo pipefail
