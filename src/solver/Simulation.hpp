@@ -143,6 +143,12 @@ class Simulation {
   double time_step(int only = -1) const;
   double capped_step(double dt, double t_stop) const;
   void finish_step(double dt);
+  // the integrator's stages from t0 over h (RK4 or the midpoint scheme): stage(c_dt, w, first),
+  // evaluate_at(t) before each later stage, rk4_final() (solver/SimulationStep.hpp)
+  template <class Stage, class EvaluateAt, class Final>
+  void integrate(double t0, double h, const Stage& stage, const EvaluateAt& evaluate_at, const Final& rk4_final);
+  // LevelEnd* <- state (keep) or state <- LevelEnd* over [first, end) (local time stepping)
+  void level_end_copy(int first, int end, bool keep);
   // local time stepping by level (solver/SimulationLocalSteps.hpp)
   double step_local(double t_stop);
   void advance_level(int l, double t0, double h, bool fresh, std::vector<double>& start, std::vector<double>& span);

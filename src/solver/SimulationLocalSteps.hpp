@@ -84,10 +84,7 @@ void Simulation<D>::advance_level(const int l, const double t0, const double h, 
   // steps), extrapolated at this level's stages, put back after them
   const auto finer_state = [&](bool keep) {
     const std::vector<LevelSpan<D>> L = levels();
-    for (int m = l + 1; m < depth; ++m)
-      apr::LevelEndCopy<D>{p_.get(field::Position{}), p_.get(field::LevelEndPosition{}), p_.get(field::Velocity{}),
-                           p_.get(field::LevelEndVelocity{}), p_.get(field::Density{}), p_.get(field::LevelEndDensity{}), keep}
-          .run(L[m].first, L[m].active_end);
+    for (int m = l + 1; m < depth; ++m) level_end_copy(L[m].first, L[m].active_end, keep);
     if (!keep) domain_.halos_stale();
   };
   const auto hold_finer_at = [&](double tau) {
@@ -116,21 +113,12 @@ void Simulation<D>::advance_level(const int l, const double t0, const double h, 
     if (refinement_) refinement_->level_step_start(l);  // its guards' shape functions at the new positions
     evaluate_at(t0, false);
   }
-  if (scene_.integrator == TimeIntegrator::RK4) {
-    stage(0.5 * h, 1.0 / 6.0, true);
-    evaluate_at(t0 + 0.5 * h, true);
-    stage(0.5 * h, 2.0 / 6.0, false);
-    evaluate_at(t0 + 0.5 * h, true);
-    stage(h, 2.0 / 6.0, false);
-    evaluate_at(t0 + h, true);
-    const auto [a, b] = all();
-    RungeKutta4Final<D>{domain_.local_box(), views(), h}.run(a, b);
-    domain_.halos_stale();
-  } else {
-    stage(0.5 * h, 0.0, true);
-    evaluate_at(t0 + 0.5 * h, true);
-    stage(h, 0.0, false);
-  }
+  integrate(t0, h, stage, [&](double tau) { evaluate_at(tau, true); },
+            [&] {
+              const auto [a, b] = all();
+              RungeKutta4Final<D>{domain_.local_box(), views(), h}.run(a, b);
+              domain_.halos_stale();
+            });
   ++level_steps_[l];
   count_particle_steps(l);
   stage_time_ = t0 + h;
@@ -143,9 +131,7 @@ void Simulation<D>::advance_level(const int l, const double t0, const double h, 
   finer_state(false);
   const auto end_state = [&](bool keep) {
     const auto [a, b] = sph();
-    apr::LevelEndCopy<D>{p_.get(field::Position{}), p_.get(field::LevelEndPosition{}), p_.get(field::Velocity{}),
-                         p_.get(field::LevelEndVelocity{}), p_.get(field::Density{}), p_.get(field::LevelEndDensity{}), keep}
-        .run(a, b);
+    level_end_copy(a, b, keep);
   };
   end_state(true);
   advance_level(l + 1, t0, 0.5 * h, fresh, start, span);
@@ -153,6 +139,13 @@ void Simulation<D>::advance_level(const int l, const double t0, const double h, 
   end_state(false);  // the finer levels' stages held it in between
   domain_.halos_stale();
   eval_level_ = l;
+}
+
+template <int D>
+void Simulation<D>::level_end_copy(const int first, const int end, const bool keep) {
+  apr::LevelEndCopy<D>{p_.get(field::Position{}), p_.get(field::LevelEndPosition{}), p_.get(field::Velocity{}),
+                       p_.get(field::LevelEndVelocity{}), p_.get(field::Density{}), p_.get(field::LevelEndDensity{}), keep}
+      .run(first, end);
 }
 
 // The SPH particles of every level coarser than l at time tau, between the start of their

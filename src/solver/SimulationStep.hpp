@@ -84,26 +84,15 @@ double Simulation<D>::step(double t_stop) {
   evaluate();  // k1 at y0, also the state the time step is computed from
   const double dt = capped_step(time_step(), t_stop);
 
-  if (scene_.integrator == TimeIntegrator::RK4) {
-    // classical RK4: y1 = y0 + dt/6 (k1 + 2 k2 + 2 k3 + k4)
-    stage(0.5 * dt, 1.0 / 6.0, true);
-    stage_time_ = t_ + 0.5 * dt;
-    evaluate(true);
-    stage(0.5 * dt, 2.0 / 6.0, false);
-    evaluate(true);
-    stage(dt, 2.0 / 6.0, false);
-    stage_time_ = t_ + dt;
-    evaluate(true);
-    // final: y = y0 + dt (acc + k4/6)
-    RungeKutta4Final<D>{domain_.local_box(), stage_views(p_, scene_), dt}.run(n_own_);
-    domain_.halos_stale();
-  } else {
-    // explicit midpoint: y_1/2 = y0 + dt/2 k1, y1 = y0 + dt k(y_1/2)
-    stage(0.5 * dt, 0.0, true);
-    stage_time_ = t_ + 0.5 * dt;
-    evaluate(true);
-    stage(dt, 0.0, false);
-  }
+  integrate(t_, dt, stage,
+            [&](double t) {
+              stage_time_ = t;
+              evaluate(true);
+            },
+            [&] {
+              RungeKutta4Final<D>{domain_.local_box(), stage_views(p_, scene_), dt}.run(n_own_);
+              domain_.halos_stale();
+            });
   finish_step(dt);
   if (refinement_) count_particle_steps(-1);
   return dt;
@@ -115,6 +104,26 @@ void Simulation<D>::count_particle_steps(const int level) {
   if (level_particle_steps_.size() != L.size()) level_particle_steps_.assign(L.size(), 0.0);
   for (const LevelSpan<D>& s : L)
     if (level < 0 || s.level == level) level_particle_steps_[s.level] += s.active_end - s.first;
+}
+
+template <int D>
+template <class Stage, class EvaluateAt, class Final>
+void Simulation<D>::integrate(const double t0, const double h, const Stage& stage, const EvaluateAt& evaluate_at, const Final& rk4_final) {
+  if (scene_.integrator == TimeIntegrator::RK4) {
+    // classical RK4: y1 = y0 + h/6 (k1 + 2 k2 + 2 k3 + k4)
+    stage(0.5 * h, 1.0 / 6.0, true);
+    evaluate_at(t0 + 0.5 * h);
+    stage(0.5 * h, 2.0 / 6.0, false);
+    evaluate_at(t0 + 0.5 * h);
+    stage(h, 2.0 / 6.0, false);
+    evaluate_at(t0 + h);
+    rk4_final();  // y = y0 + h (acc + k4/6)
+  } else {
+    // explicit midpoint: y_1/2 = y0 + h/2 k1, y1 = y0 + h k(y_1/2)
+    stage(0.5 * h, 0.0, true);
+    evaluate_at(t0 + 0.5 * h);
+    stage(h, 0.0, false);
+  }
 }
 
 // dt, shortened so that the step ends on t_stop without a sliver step before it
