@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <set>
 #include <random>
 #include <tuple>
 
@@ -499,6 +500,38 @@ TEST_CASE("APR interaction lists: no symmetric pair mixes two radii, guards see 
     for (int a = cross.first(i); a < cross.first(i + 1); ++a)
       if (h.guard(cross.second(a))) ++guard_to_guard;
   }
+  // against brute force over every pair (minimum image): each row holds every partner within
+  // its radius (R_r for L., the interpolation radius R_{r+1} or R_{r-1} for a mother or a
+  // daughter guard's Lx), once, and none beyond the radius plus the Verlet skin (0.3 dx_0)
+  std::size_t missing = 0, duplicates = 0, too_far = 0;
+  const double R[4] = {0.06, 0.03, 0.015, 0.0075}, L = 0.64;
+  auto dist = [&](int i, int j) {
+    double d2 = 0.0;
+    for (int k = 0; k < 2; ++k) {
+      double d = h.x(i, k) - h.x(j, k);
+      d -= L * std::round(d / L);
+      d2 += d * d;
+    }
+    return std::sqrt(d2);
+  };
+  for (int i = 0; i < n; ++i) {
+    const int r = h.birth(i);
+    const bool g = h.guard(i) != 0;
+    const double c = !g ? R[r] : h.mother(i) == 1 ? R[std::min(r + 1, 3)] : R[std::max(r - 1, 0)];
+    const auto& list = g ? cross : dot;
+    std::set<int> row;
+    for (int a = list.first(i); a < list.first(i + 1); ++a) {
+      if (!row.insert(list.second(a)).second) ++duplicates;
+      if (dist(i, list.second(a)) > c + 0.3 * 0.02 + 1e-12) ++too_far;
+    }
+    for (int j = 0; j < n; ++j) {
+      if (j == i || (g ? h.guard(j) != 0 : h.birth(j) != r)) continue;
+      if (dist(i, j) < c && row.count(j) == 0) ++missing;
+    }
+  }
+  CHECK(missing == 0);
+  CHECK(duplicates == 0);
+  CHECK(too_far == 0);
   int per_level[4] = {0, 0, 0, 0};
   for (int i = 0; i < n; ++i) per_level[h.birth(i)]++;
   std::printf("APR 4 levels: particles per level %d %d %d %d, %zu L. pairs, %d guards + %d passive\n", per_level[0], per_level[1],

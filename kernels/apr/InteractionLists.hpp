@@ -10,8 +10,10 @@
 //    within its interpolation radius + skin (R_{r-1} for a daughter guard of level r, which
 //    fits at R_r where it can, R_{r+1} for a mother guard), the sources of its interpolation (5.24). SPH
 //    particles have no Lx row; guards never see guards.
-// Built in two passes (count, scan, fill) from the cell list, like NeighbourList.
+// Built in two passes (count, scan, fill) from the levels' cell lists (LevelCells.hpp),
+// like NeighbourList: L. scans its own level's grid, Lx every level's.
 #include "kernels/NeighbourList.hpp"
+#include "kernels/apr/LevelCells.hpp"
 #include "kernels/apr/RefinementZones.hpp"
 
 namespace ondine {
@@ -21,7 +23,7 @@ namespace apr {
 // Calls f(j) for every partner j of i in L. (Guards = false) or Lx (Guards = true).
 template <int D, bool Guards>
 struct LevelVisitor {
-  CellGrid<D> g;
+  LevelGrids<D> grids;
   PeriodicBox<D> box;
   Kokkos::View<int*, MemSpace> start, perm;
   field_view_t<field::Position, D> x;
@@ -40,17 +42,19 @@ struct LevelVisitor {
     // a mother guard interpolates at its daughters' radius; a daughter guard at its own,
     // or at its mother's where its own holds too few sources (GuardInterpolation.hpp)
     const double c2 = !Guards ? cut2[r] : mother(i) == 1 ? mother_cut2[r] : daughter_cut2[r];
+    const double c = kmath::sqrt(c2);
     const Vec<D> xi = load<D>(x, i);
-    int home[D];
-    for (int k = 0; k < D; ++k) home[k] = g.coord(xi[k], k);
-    for_each_adjacent_cell<D>(g, home, [&](const int c) {
-      for (int a = start(c); a < start(c + 1); ++a) {
-        const int j = perm(a);
-        if (j == i) continue;
-        if (Guards ? guard(j) != 0 : birth(j) != r) continue;
-        if (norm2(box.delta(xi, load<D>(x, j))) < c2) f(j);
-      }
-    });
+    const int first = Guards ? 0 : r, last = Guards ? grids.levels : r + 1;
+    for (int l = first; l < last; ++l) {
+      const int base = grids.base[l];
+      for_each_cell_within<D>(grids.grid[l], xi, c, [&](const int cell) {
+        for (int a = start(base + cell); a < start(base + cell + 1); ++a) {
+          const int j = perm(a);
+          if (j == i || (Guards && guard(j) != 0)) continue;
+          if (norm2(box.delta(xi, load<D>(x, j))) < c2) f(j);
+        }
+      });
+    }
   }
 };
 

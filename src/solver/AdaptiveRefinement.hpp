@@ -306,16 +306,19 @@ class AdaptiveRefinement {
     return plan.kept;
   }
 
-  // L. and Lx for the n owned particles (sorted), from a cell list of the current
+  // L. and Lx for the n owned particles (sorted), from the levels' cell lists of the current
   // positions of the owned particles and the halos (with their birth levels and roles).
   // `reset_wide`: each guard tries its own radius R_f again (a new list; false when
   // the lists are rebuilt only to follow a migration, and the flags are put back).
-  void build_lists(const ParticleSet<D>& p, const CellList<D>& cells, const PeriodicBox<D>& box, int n, bool reset_wide = true) {
-    apr::LevelVisitor<D, false> dot{cells.grid, box, cells.cell_start, cells.sorted, p.get(field::Position{}),
+  void build_lists(const ParticleSet<D>& p, const PeriodicBox<D>& box, int n, bool reset_wide = true) {
+    double cutoff[kAprMaxLevels];
+    for (int l = 0; l < kAprMaxLevels; ++l) cutoff[l] = zones_.R[l] + skins_[l];
+    cells_.build(box, cutoff, levels_, p.get(field::Position{}), p.get(field::AprBirthLevel{}), static_cast<int>(p.size()));
+    apr::LevelVisitor<D, false> dot{cells_.grids, box, cells_.cell_start, cells_.sorted, p.get(field::Position{}),
                                     p.get(field::AprBirthLevel{}), p.get(field::AprGuard{}), p.get(field::AprMother{}), {}, {}, {}};
-    for (int l = 0; l < kAprMaxLevels; ++l) dot.cut2[l] = (zones_.R[l] + skins_[l]) * (zones_.R[l] + skins_[l]);
+    for (int l = 0; l < kAprMaxLevels; ++l) dot.cut2[l] = cutoff[l] * cutoff[l];
     apr::build_list<D, false>(l_dot_, dot, n, "SymmetricList");
-    apr::LevelVisitor<D, true> cross{cells.grid, box, cells.cell_start, cells.sorted, p.get(field::Position{}),
+    apr::LevelVisitor<D, true> cross{cells_.grids, box, cells_.cell_start, cells_.sorted, p.get(field::Position{}),
                                      p.get(field::AprBirthLevel{}), p.get(field::AprGuard{}), p.get(field::AprMother{}), {}, {}, {}};
     for (int l = 0; l < kAprMaxLevels; ++l) {
       cross.cut2[l] = dot.cut2[l];
@@ -443,6 +446,7 @@ private:
   KernelType kernel_ = KernelType::WendlandC2;
   double skin_ = 0;
   double skins_[kAprMaxLevels] = {};  // each level's Verlet skin (skin_ unless local time stepping)
+  apr::LevelCells<D> cells_;          // the levels' cell lists L. and Lx are built from
   int levels_ = 1;
   std::vector<int> first_, active_end_, guard_end_, end_;
   NeighbourList<D> l_dot_, l_cross_;

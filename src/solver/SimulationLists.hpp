@@ -52,7 +52,7 @@ void Simulation<D>::rebuild_lists(bool roles, bool may_rebalance) {
   }
   const auto x = p_.get(field::Position{});
   domain_.build_cells(x, static_cast<int>(p_.size()));
-  if (refinement_) refinement_->apr().build_lists(p_, domain_.cells(), domain_.box(), n_own_);
+  if (refinement_) refinement_->apr().build_lists(p_, domain_.box(), n_own_);
   else domain_.build_list(x, n_own_);
   domain_.built(x);
   if (serial) return;

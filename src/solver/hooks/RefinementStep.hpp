@@ -131,7 +131,7 @@ void Refinement<D>::relist_for_output(StepState<D>& s) {
   refresh_halo_roles(s);
   const auto x = p.get(field::Position{});
   domain.build_cells(x, static_cast<int>(p.size()));
-  apr_.build_lists(p, domain.cells(), domain.box(), s.owned(), false);
+  apr_.build_lists(p, domain.box(), s.owned(), false);
   if (valid) {
     const auto ws2 = p.get(field::StageDensity{});
     const auto wide = apr_.wide_flags();
