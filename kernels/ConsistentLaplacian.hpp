@@ -92,12 +92,14 @@ struct LaplacianBasis {
       for (int b = a + 1; b < D; ++b) f[p++] = 2.0 * x[a] * x[b];
     for (int a = 0; a < D; ++a) f[p++] = x[a];
   }
-  // moments += c psi psi^T
+  // moments += c psi psi^T, its upper triangle (q >= p; solve mirrors it)
   KOKKOS_INLINE_FUNCTION static void accumulate(double (&moments)[K][K], double c, const Vec<D>& x) {
     double f[K];
     psi(x, f);
-    for (int p = 0; p < K; ++p)
-      for (int q = 0; q < K; ++q) moments[p][q] += c * f[p] * f[q];
+    for (int p = 0; p < K; ++p) {
+      const double cp = c * f[p];
+      for (int q = p; q < K; ++q) moments[p][q] += cp * f[q];
+    }
   }
   // the weight s_i(x) = (x.A_i.x + b_i.x) / |x|^2 of a pair, from the stored (a, b)
   template <class View>
@@ -115,6 +117,8 @@ struct LaplacianBasis {
   template <class View>
   KOKKOS_INLINE_FUNCTION static bool solve(double (&moments)[K][K], bool complete, double kappa, double gamma,
                                            const View& ab, int i) {
+    for (int p = 0; p < K; ++p)
+      for (int q = 0; q < p; ++q) moments[p][q] = moments[q][p];
     double z[K];
     for (int p = 0; p < K; ++p) z[p] = p < D ? -2.0 * gamma : 0.0;
     bool ok = complete && solve_small<K>(moments, z, 1e-10);

@@ -1,8 +1,8 @@
 #pragma once
 // The cell lists the APR lists L. and Lx are built from: a grid per level, with cells no
-// smaller than that level's list cut-off R_l + skin_l, over the box the level's particles
-// (owned and halos) occupy (the domain's extent along a periodic axis), the levels' grids
-// numbered end to end in one CSR. A query of radius c scans ceil(c / cell) cells each way.
+// smaller than that level's list cut-off R_l + skin_l, the cells of the domain's lattice of
+// that size that the level's particles (owned and halos) span (the whole axis where it is
+// periodic), the levels' grids numbered end to end in one CSR. A query of radius c scans ceil(c / cell) cells each way.
 // With the domain's one grid of the coarsest cut-off a particle k levels finer scanned
 // 4^k (2D) or 8^k (3D) times the cells its own cut-off needs (the refined cylinder's three
 // levels: the lists' count and fill took 21 % of the run; perf/README.md).
@@ -17,9 +17,30 @@ namespace ondine {
 
 namespace apr {
 
+// A level's grid: the cells of the global lattice of its cut-off (origin the domain's corner, as
+// make_cell_grid) from cell `first` on, `n` of them per axis. Cut from one lattice, the cells and
+// the order a row is filled in are the same on any rank count (a restart from 2 ranks onto 1
+// gives the same sums, bit for bit).
+template <int D>
+struct LevelGrid {
+  double lo[D], inv_size[D];
+  int first[D], n[D];
+  bool periodic[D];
+  KOKKOS_INLINE_FUNCTION int linear(const int* c) const {
+    int idx = c[D - 1];
+    for (int k = D - 2; k >= 0; --k) idx = idx * n[k] + c[k];
+    return idx;
+  }
+  int cells() const {
+    int t = 1;
+    for (int k = 0; k < D; ++k) t *= n[k];
+    return t;
+  }
+};
+
 template <int D>
 struct LevelGrids {
-  CellGrid<D> grid[kAprMaxLevels];
+  LevelGrid<D> grid[kAprMaxLevels];
   int base[kAprMaxLevels + 1] = {};  // each level's first cell in the CSR
   int levels = 0;
 };
@@ -28,17 +49,17 @@ struct LevelGrids {
 // particle of a rank that does not span a periodic axis, or a halo, may lie beyond it by
 // more than a cell of a fine level), elsewhere clamped to the grid's end cells.
 template <int D>
-KOKKOS_INLINE_FUNCTION int level_cell_coord(const CellGrid<D>& g, const double x, const int k) {
-  if (!g.periodic[k]) return g.coord(x, k);
-  const int c = static_cast<int>(kmath::floor((x - g.lo[k]) * g.inv_size[k]));
-  return ((c % g.n[k]) + g.n[k]) % g.n[k];
+KOKKOS_INLINE_FUNCTION int level_cell_coord(const LevelGrid<D>& g, const double x, const int k) {
+  const int c = static_cast<int>(kmath::floor((x - g.lo[k]) * g.inv_size[k])) - g.first[k];
+  if (g.periodic[k]) return ((c % g.n[k]) + g.n[k]) % g.n[k];
+  return c < 0 ? 0 : (c >= g.n[k] ? g.n[k] - 1 : c);
 }
 
 // Calls f(cell) for each cell of g within c of xi along every axis (the cells of the
 // axis' range [xi - c, xi + c]; each cell once where a periodic axis has fewer cells than
 // the range spans).
 template <int D, class F>
-KOKKOS_INLINE_FUNCTION void for_each_cell_within(const CellGrid<D>& g, const Vec<D>& xi, const double c, F&& f) {
+KOKKOS_INLINE_FUNCTION void for_each_cell_within(const LevelGrid<D>& g, const Vec<D>& xi, const double c, F&& f) {
   int home[D], lo[D], hi[D], off[D];
   for (int k = 0; k < D; ++k) {
     home[k] = level_cell_coord<D>(g, xi[k], k);
@@ -116,22 +137,25 @@ struct LevelCells {
     grids.levels = levels;
     grids.base[0] = 0;
     for (int l = 0; l < levels; ++l) {
-      CellGrid<D>& g = grids.grid[l];
+      LevelGrid<D>& g = grids.grid[l];
       for (int k = 0; k < D; ++k) {
-        const double mn = bounds[2 * D * l + k], mx = -bounds[2 * D * l + D + k];
-        double lo = box.lo[k], len = box.len[k];
+        const int cells = box.len[k] > cutoff[l] ? static_cast<int>(box.len[k] / cutoff[l]) : 1;  // make_cell_grid's
+        g.lo[k] = box.lo[k];
+        g.inv_size[k] = cells / box.len[k];
+        g.periodic[k] = box.periodic[k];
+        g.first[k] = 0;
+        g.n[k] = cells;
         if (!box.periodic[k]) {
-          if (mn <= mx) {
-            lo = mn;
-            len = mx - mn;
-          } else {
-            len = 0.0;  // no particle of this level
+          const double mn = bounds[2 * D * l + k], mx = -bounds[2 * D * l + D + k];
+          const auto clamp = [&](double x) {
+            const double c = std::floor((x - box.lo[k]) * g.inv_size[k]);
+            return c < 0 ? 0 : (c >= cells ? cells - 1 : static_cast<int>(c));
+          };
+          if (mn <= mx) {  // else no particle of this level: the whole lattice, empty
+            g.first[k] = clamp(mn);
+            g.n[k] = clamp(mx) - g.first[k] + 1;
           }
         }
-        g.lo[k] = lo;
-        g.n[k] = len > cutoff[l] ? static_cast<int>(len / cutoff[l]) : 1;
-        g.inv_size[k] = len > 0.0 ? g.n[k] / len : 1.0 / cutoff[l];
-        g.periodic[k] = box.periodic[k];
       }
       grids.base[l + 1] = grids.base[l] + g.cells();
     }

@@ -291,7 +291,8 @@ const std::vector<ValidationCase>& catalogue() {
       // 8.2e4 and 3.3e5 particles). Without local time stepping every particle of the refined run
       // takes the D/50 step: about 2.7e4 steps of 2.2e5 particles, a GPU's job (full level only)
       {"apr_cylinder_re100_2d", "cases/cylinder_re100_wide_2d.yaml", 0.1,
-       {{0.008, true, true, "coarse"}, {0.008, true, true, "apr", "cases/cylinder_re100_apr_2d.yaml"}, {0.004, true, true, "fine"}},
+       {{0.008, true, true, "coarse"}, {0.008, true, true, "apr", "cases/cylinder_re100_apr_2d.yaml"},
+        {0.008, true, true, "apr_lts", "cases/cylinder_re100_apr_2d.yaml", {lts}}, {0.004, true, true, "fine"}},
        cylinder_bounds, cylinder_sets, {}, cylinder_apr_shown},
       // SPHERIC Test 2 with a refinement zone around the box obstacle (cases/spheric_test2_apr_3d.yaml):
       // coarse uniform (dx = 0.06 m), refined (0.03 m in the zone) and fine uniform (0.03 m), to
@@ -301,7 +302,8 @@ const std::vector<ValidationCase>& catalogue() {
       // stage), in place of the uniform case file's fast ones, the sensors at 500 Hz (every step
       // cut to land on them)
       {"apr_spheric_test2_3d", "cases/spheric_test2_3d.yaml", 0.55,
-       {{0.06, false, true, "coarse"}, {0.06, false, true, "apr", "cases/spheric_test2_apr_3d.yaml"}, {0.03, false, true, "fine"}},
+       {{0.06, false, true, "coarse"}, {0.06, false, true, "apr", "cases/spheric_test2_apr_3d.yaml"},
+        {0.06, false, true, "apr_lts", "cases/spheric_test2_apr_3d.yaml", {lts}}, {0.03, false, true, "fine"}},
        stable({{"wall_crossings", 0.5}}),
        {"scheme.cfl.acoustic=0.375", "scheme.density_gradient=stage", "time.output_at=exact", "time.output_interval=0.002"}, {},
        {"H2_rms_error", "H4_rms_error", "P1_peak_relative_error", "P1_peak_time_error", "P3_peak_relative_error", "P3_peak_time_error",
