@@ -6,8 +6,10 @@
 // With the domain's one grid of the coarsest cut-off a particle k levels finer scanned
 // 4^k (2D) or 8^k (3D) times the cells its own cut-off needs (the refined cylinder's three
 // levels: the lists' count and fill took 21 % of the run; perf/README.md).
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "kernels/CellList.hpp"
 #include "kernels/Fields.hpp"
