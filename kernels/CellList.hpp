@@ -46,6 +46,35 @@ CellGrid<D> make_cell_grid(const PeriodicBox<D>& box, double cutoff) {
   return g;
 }
 
+// The rest of a cell list's build once each particle's cell is in cell_of and the cells'
+// counts in start(c + 1) (start(0) = 0): the exclusive scan into offsets, the fill, then an
+// insertion sort of each cell (a handful of particles) by particle index, for determinism.
+inline void finish_cells(const std::string& name, const Kokkos::View<int*, MemSpace>& start, const Kokkos::View<int*, MemSpace>& cell_of,
+                         const Kokkos::View<int*, MemSpace>& perm, const int n, const int ncell) {
+  Kokkos::parallel_scan(name + "::scan", Kokkos::RangePolicy<ExecSpace>(0, ncell + 1),
+                        KOKKOS_LAMBDA(const int c, int& partial, const bool final) {
+                          partial += start(c);
+                          if (final) start(c) = partial;
+                        });
+  Kokkos::View<int*, MemSpace> cursor(name + "::cursor", ncell);
+  Kokkos::parallel_for(name + "::fill", Kokkos::RangePolicy<ExecSpace>(0, n), KOKKOS_LAMBDA(const int i) {
+    const int c = cell_of(i);
+    perm(start(c) + Kokkos::atomic_fetch_add(&cursor(c), 1)) = i;
+  });
+  Kokkos::parallel_for(name + "::order", Kokkos::RangePolicy<ExecSpace>(0, ncell), KOKKOS_LAMBDA(const int c) {
+    const int b = start(c), e = start(c + 1);
+    for (int a = b + 1; a < e; ++a) {
+      const int v = perm(a);
+      int p = a - 1;
+      while (p >= b && perm(p) > v) {
+        perm(p + 1) = perm(p);
+        --p;
+      }
+      perm(p + 1) = v;
+    }
+  });
+}
+
 template <int D>
 struct CellList {
   CellGrid<D> grid;
@@ -73,29 +102,7 @@ struct CellList {
       cell_of_(i) = idx;
       Kokkos::atomic_increment(&start(idx + 1));
     });
-    Kokkos::parallel_scan("ondine::CellList::scan", Kokkos::RangePolicy<ExecSpace>(0, ncell + 1),
-                          KOKKOS_LAMBDA(const int c, int& partial, const bool final) {
-                            partial += start(c);
-                            if (final) start(c) = partial;
-                          });
-    Kokkos::View<int*, MemSpace> cursor("ondine::CellList::cursor", ncell);
-    Kokkos::parallel_for("ondine::CellList::fill", Kokkos::RangePolicy<ExecSpace>(0, n), KOKKOS_LAMBDA(const int i) {
-      const int c = cell_of_(i);
-      perm(start(c) + Kokkos::atomic_fetch_add(&cursor(c), 1)) = i;
-    });
-    // Insertion sort within each cell (a handful of particles) for determinism.
-    Kokkos::parallel_for("ondine::CellList::order", Kokkos::RangePolicy<ExecSpace>(0, ncell), KOKKOS_LAMBDA(const int c) {
-      const int b = start(c), e = start(c + 1);
-      for (int a = b + 1; a < e; ++a) {
-        const int v = perm(a);
-        int p = a - 1;
-        while (p >= b && perm(p) > v) {
-          perm(p + 1) = perm(p);
-          --p;
-        }
-        perm(p + 1) = v;
-      }
-    });
+    finish_cells("ondine::CellList", start, cell_of_, perm, n, ncell);
   }
 };
 

@@ -166,8 +166,8 @@ struct LevelCells {
     if (static_cast<int>(sorted.extent(0)) < n) sorted = Kokkos::View<int*, MemSpace>("ondine::APR::LevelCells::sorted", n);
     if (static_cast<int>(cell_start.extent(0)) < ncell + 1)
       cell_start = Kokkos::View<int*, MemSpace>("ondine::APR::LevelCells::cell_start", ncell + 1 + ncell / 8);
-    auto start = Kokkos::subview(cell_start, Kokkos::make_pair(0, ncell + 1));
-    Kokkos::deep_copy(start, 0);
+    Kokkos::deep_copy(cell_start, 0);
+    const auto start = cell_start;
     const LevelGrids<D> gs = grids;
     const auto cell = cell_of;
     const auto perm = sorted;
@@ -179,29 +179,8 @@ struct LevelCells {
       cell(i) = idx;
       Kokkos::atomic_increment(&start(idx + 1));
     });
-    Kokkos::parallel_scan("ondine::APR::LevelCells::scan", Kokkos::RangePolicy<ExecSpace>(0, ncell + 1),
-                          KOKKOS_LAMBDA(const int c, int& partial, const bool final) {
-                            partial += start(c);
-                            if (final) start(c) = partial;
-                          });
-    Kokkos::View<int*, MemSpace> cursor("ondine::APR::LevelCells::cursor", ncell);
-    Kokkos::parallel_for("ondine::APR::LevelCells::fill", Kokkos::RangePolicy<ExecSpace>(0, n), KOKKOS_LAMBDA(const int i) {
-      const int c = cell(i);
-      perm(start(c) + Kokkos::atomic_fetch_add(&cursor(c), 1)) = i;
-    });
-    // by index within each cell, so that every sum over a list is deterministic (CellList.hpp)
-    Kokkos::parallel_for("ondine::APR::LevelCells::order", Kokkos::RangePolicy<ExecSpace>(0, ncell), KOKKOS_LAMBDA(const int c) {
-      const int b = start(c), e = start(c + 1);
-      for (int a = b + 1; a < e; ++a) {
-        const int v = perm(a);
-        int p = a - 1;
-        while (p >= b && perm(p) > v) {
-          perm(p + 1) = perm(p);
-          --p;
-        }
-        perm(p + 1) = v;
-      }
-    });
+    // the scan, the fill and each cell by particle index (CellList.hpp)
+    finish_cells("ondine::APR::LevelCells", start, cell, perm, n, ncell);
   }
 };
 
