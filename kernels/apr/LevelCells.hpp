@@ -24,20 +24,8 @@ namespace apr {
 // the order a row is filled in are the same on any rank count (a restart from 2 ranks onto 1
 // gives the same sums, bit for bit).
 template <int D>
-struct LevelGrid {
-  double lo[D], inv_size[D];
-  int first[D], n[D];
-  bool periodic[D];
-  KOKKOS_INLINE_FUNCTION int linear(const int* c) const {
-    int idx = c[D - 1];
-    for (int k = D - 2; k >= 0; --k) idx = idx * n[k] + c[k];
-    return idx;
-  }
-  int cells() const {
-    int t = 1;
-    for (int k = 0; k < D; ++k) t *= n[k];
-    return t;
-  }
+struct LevelGrid : CellGrid<D> {  // lo, inv_size, n, periodic, linear(), cells() of the cut grid
+  int first[D];
 };
 
 template <int D>
