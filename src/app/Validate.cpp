@@ -10,9 +10,11 @@
 
 #include "run/BuildInfo.hpp"
 #include "app/ValidateReport.hpp"
+#include "app/ValidateResume.hpp"
 #include "app/ValidationCatalogue.hpp"
 #include "SourceCommit.hpp"  // generated: cmake/SourceCommit.cmake
 #include "scene/CaseFile.hpp"
+#include "io/Checkpoint.hpp"
 #include "scene/FluxSchemes.hpp"
 #include "run/Runner.hpp"
 
@@ -26,6 +28,22 @@ using validate::ValidationCase;
 using validate::catalogue;
 using validate::fmt;
 using validate::group_of;
+using validate::ResumeError;
+using validate::RungState;
+
+// A rung stopped by SIGINT or SIGTERM: its checkpoint is written, the validation stops
+struct Interrupted {
+  int signal;
+};
+
+// --resume: a rung writes a checkpoint at least this often, so that a stopped session loses at most this much
+constexpr double resume_checkpoint_seconds = 600;
+
+// --variant: the rungs of an APR ladder run (all when none is named; a ladder without variants always runs)
+bool variant_chosen(const ValidateOptions& opt, const Rung& r) {
+  return opt.variants.empty() || r.variant.empty() ||
+         std::find(opt.variants.begin(), opt.variants.end(), r.variant) != opt.variants.end();
+}
 
 // --case: no --case: the accuracy cases; stability, apr, open, fine, turbulence, impact: that group; all: all of
 // them but the fine group (hours on a CPU, minutes on a GPU); or case names
@@ -69,6 +87,16 @@ bool options_known(const ValidateOptions& opt) {
   if ((opt.transport == "ale" || opt.transport == "ale_free") && !riemann_flux(opt)) {
     std::fprintf(stderr, "ondine validate: --transport ale needs --flux riemann or riemann_vila (the ALE transport is built on Riemann-SPH)\n");
     return false;
+  }
+  for (const std::string& v : opt.variants) {
+    bool known = false;
+    for (const ValidationCase& c : catalogue())
+      for (const Rung& r : c.ladder) known = known || r.variant == v;
+    if (!known) {
+      std::fprintf(stderr, "ondine validate: unknown --variant '%s'; expected a rung of an APR ladder (coarse, apr, apr_lts, fine, ...)\n",
+                   v.c_str());
+      return false;
+    }
   }
   if (opt.level != "quick" && opt.level != "full") {
     std::fprintf(stderr, "ondine validate: --level must be quick or full, got '%s'\n", opt.level.c_str());
@@ -138,18 +166,45 @@ Scene load_rung_scene(const ValidateOptions& opt, const std::string& file, const
   return s;
 }
 
-// One run of a rung into OUT/dir, with its profile.csv.
+// One run of a rung into OUT/dir, with its profile.csv. With --resume: a run completed in
+// OUT/dir with the same case file and overrides is taken as it is, one stopped part-way goes on
+// from its checkpoint (ValidateResume.hpp); the report holds the totals since t = 0.
+// Throws Interrupted when a signal stopped it, ResumeError for a folder --resume cannot use.
 RunReport run_one(const ValidateOptions& opt, const ValidationCase& c, const Rung& r, double resolution,
                   const std::vector<std::string>& overrides, const std::string& dir, RunScale& scale) {
-  const Scene scene = load_rung_scene(opt, r.file.empty() ? c.file : r.file, overrides);
-  RunOptions ro;
-  ro.out_dir = opt.out_dir + "/" + dir;
-  ro.progress = false;
-  std::fprintf(stderr, "ondine validate: %s at %g particles per length ...\n", dir.c_str(), resolution);
-  const RunReport rep = run_scene(scene, ro);
+  const std::string file = r.file.empty() ? c.file : r.file;
+  Scene scene = load_rung_scene(opt, file, overrides);
   scale.u_ref = scene.reference_velocity;
   scale.rho0 = scene.rho0;
   resolve_scheme(scene, scale);
+  RunOptions ro;
+  ro.out_dir = opt.out_dir + "/" + dir;
+  ro.progress = false;
+  if (opt.resume) {
+    const nlohmann::json id = validate::rung_identity(file, overrides);
+    const RungState st = validate::resume_state(ro.out_dir, id);
+    if (st.kind == RungState::Kind::Completed) {
+      std::fprintf(stderr, "ondine validate: %s completed before (%s/summary.json), taken as it is\n", dir.c_str(), ro.out_dir.c_str());
+      return st.report;
+    }
+    ro.restart = st.checkpoint;
+    validate::write_rung_identity(ro.out_dir, id, ONDINE_SOURCE_COMMIT);
+    if (!(scene.checkpoint_every_wall_seconds > 0) || scene.checkpoint_every_wall_seconds > resume_checkpoint_seconds)
+      scene.checkpoint_every_wall_seconds = resume_checkpoint_seconds;
+  }
+  std::fprintf(stderr, "ondine validate: %s at %g particles per length%s ...\n", dir.c_str(), resolution,
+               ro.restart.empty() ? "" : (", from " + ro.restart).c_str());
+  RunReport rep;
+  try {
+    rep = run_scene(scene, ro);
+  } catch (const CheckpointError& e) {
+    throw ResumeError(std::string(e.what()) + "; remove " + ro.out_dir + " to run the rung again");
+  }
+  if (rep.status == "interrupted") throw Interrupted{rep.signal};
+  // the record's figures are the run's since t = 0, over the processes that made it
+  rep.steps = rep.total_steps;
+  rep.wall_seconds = rep.total_wall_seconds;
+  rep.cpu_seconds = rep.total_cpu_seconds;
   try {
     validate::write_profile(scene, ro.out_dir);
   } catch (const std::exception& e) {
@@ -234,6 +289,8 @@ std::map<std::string, double> run_rung(const ValidateOptions& opt, const Validat
   run["particle_steps_per_second"] = rep.wall_seconds > 0 ? rep.particles * static_cast<double>(rep.steps) / rep.wall_seconds : 0.0;
   run["errors"] = rep.errors;
   run["status"] = rep.status;
+  // a run made by several validations (--resume): the commits of each
+  if (const std::vector<std::string> commits = validate::rung_commits(opt.out_dir + "/" + rel); commits.size() > 1) run["commits"] = commits;
   // with refinement zones: each level's SPH particles x steps, and with local time stepping each level's steps
   {
     std::ifstream in(opt.out_dir + "/" + rel + "/summary.json");
@@ -288,7 +345,7 @@ bool resolve_runs(const ValidateOptions& opt, const std::vector<const Validation
   bool ok = true;
   for (const ValidationCase* c : chosen)
     for (const Rung& r : c->ladder) {
-      if (r.full_only && opt.level != "full") continue;
+      if ((r.full_only && opt.level != "full") || !variant_chosen(opt, r)) continue;
       std::vector<std::vector<std::string>> runs{rung_sets(opt, *c, r)};
       if (!c->contrast.empty()) {
         runs.push_back(runs.front());
@@ -334,8 +391,17 @@ int run_validation(const ValidateOptions& opt) {
   for (const ValidationCase* c : chosen) {
     std::vector<std::pair<double, std::map<std::string, double>>> ladder;
     for (const Rung& r : c->ladder) {
-      if (r.full_only && opt.level != "full") continue;
-      ladder.emplace_back(c->length / r.dx, run_rung(opt, *c, r, report));
+      if ((r.full_only && opt.level != "full") || !variant_chosen(opt, r)) continue;
+      try {
+        ladder.emplace_back(c->length / r.dx, run_rung(opt, *c, r, report));
+      } catch (const Interrupted& i) {
+        std::fprintf(stderr, "ondine validate: stopped by signal %d; the rung's checkpoint is written, no report; continue with the same "
+                     "command and --resume\n", i.signal);
+        return 128 + i.signal;
+      } catch (const ResumeError& e) {
+        std::fprintf(stderr, "ondine validate: cannot resume: %s\n", e.what());
+        return 2;
+      }
     }
     // APR comparisons: the APR (and coarse) run against the fine one; no observed order across them
     if (!c->ladder.empty() && !c->ladder.front().variant.empty())

@@ -20,6 +20,10 @@ struct ValidateOptions {
   std::string flux = "case", transport = "case";
   bool list = false;  // --list: print the catalogue (name, group, case file) and run nothing
   bool dry_run = false;  // --dry-run: resolve every chosen run's scene and flux scheme, run nothing
+  // --resume: take the rungs completed in out_dir as they are and go on with those stopped from their
+  // checkpoints (app/ValidateResume.hpp); every rung then writes a checkpoint every 10 wall minutes
+  bool resume = false;
+  std::vector<std::string> variants;  // --variant: only these rungs of an APR ladder (empty: all)
 };
 
 // Returns the process exit code: 0 when every run passed its thresholds.

@@ -80,6 +80,13 @@ int run_app(int argc, char** argv, int ranks, int rank, const std::string& no_de
                        "case (each case file's), delta_sph (the thesis' delta-SPH, 2.60), delta_sph_hydrostatic (the same with scheme.delta_sph_form: hydrostatic), riemann (Riemann-SPH with MUSCL, Leduc's form) or riemann_vila (Vila's form with mass fluxes): the fluid flux of every run (docs/case-file.md scheme.flux)");
   validate->add_option("--transport", vopt.transport,
                        "case (each case file's), lagrangian, shifting, ale (Oger's transport velocity; with --flux riemann or riemann_vila) or ale_free (the same with scheme.ale.cut_supports: free): the particle transport of every run (docs/case-file.md scheme.transport)");
+  validate->add_flag("--resume", vopt.resume,
+                     "take the rungs completed in OUT as they are and continue those stopped (a signal, the end of a session) from "
+                     "their checkpoints; every rung writes a checkpoint every 10 wall minutes. A folder holding a run of other "
+                     "settings is refused");
+  validate->add_option("--variant", vopt.variants,
+                       "run only this rung of an APR ladder (coarse, apr, apr_lts, fine; repeatable); the others are left out of the "
+                       "report");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -97,6 +104,8 @@ int run_app(int argc, char** argv, int ranks, int rank, const std::string& no_de
       return 2;
     }
     vopt.source_dir = ONDINE_SOURCE_DIR;
+    std::signal(SIGINT, on_signal);  // the running rung writes its checkpoint and the validation stops
+    std::signal(SIGTERM, on_signal);
     try {
       return ondine::run_validation(vopt);
     } catch (const ondine::CaseError& e) {

@@ -21,6 +21,9 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, std::i
   f.attribute("initial_momentum_z", h.initial_momentum[2]);
   f.attribute("checksum", h.checksum);
   f.attribute("wall_corrections", h.wall_corrections);
+  f.attribute("run_wall_seconds", h.run_wall_seconds);
+  f.attribute("run_cpu_seconds", h.run_cpu_seconds);
+  f.attribute("initial_particles", h.initial_particles);
   std::vector<std::string> names = checkpoint_fields();
   if (h.refinement.present) {
     const CheckpointRefinement& a = h.refinement;
@@ -32,6 +35,7 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, std::i
     f.attribute("refinement_guard_shifts", a.guard_shifts);
     f.attribute("refinement_guards_limited", a.guards_limited);
     if (!a.level_steps.empty()) f.attribute("refinement_level_steps", a.level_steps);
+    if (!a.level_particle_steps.empty()) f.attribute("refinement_level_particle_steps", a.level_particle_steps);
     f.attribute("refinement_momentum_change", std::vector<double>(a.momentum_change, a.momentum_change + 3));
     f.attribute("refinement_momentum_scale", a.momentum_scale);
     f.attribute("refinement_zone_offset", a.offset);
@@ -78,6 +82,9 @@ CheckpointSlice read_checkpoint(const std::string& path, const Communicator& com
     h.checksum = r.attribute_u64("checksum");
     // counters added after the format's first files: 0 when absent
     h.wall_corrections = r.has("wall_corrections") ? r.attribute_int("wall_corrections") : 0;
+    h.run_wall_seconds = r.has("run_wall_seconds") ? r.attribute_double("run_wall_seconds") : 0;
+    h.run_cpu_seconds = r.has("run_cpu_seconds") ? r.attribute_double("run_cpu_seconds") : 0;
+    h.initial_particles = r.has("initial_particles") ? r.attribute_int("initial_particles") : 0;
     std::vector<std::string> names = checkpoint_fields();
     if (r.has("refinement_zones")) {
       // written by a run with refinement zones: its APR state and fields (all of them)
@@ -91,6 +98,7 @@ CheckpointSlice read_checkpoint(const std::string& path, const Communicator& com
       a.guard_shifts = r.has("refinement_guard_shifts") ? r.attribute_int("refinement_guard_shifts") : 0;
       a.guards_limited = r.has("refinement_guards_limited") ? r.attribute_int("refinement_guards_limited") : 0;
       if (r.has("refinement_level_steps")) a.level_steps = r.attribute_doubles("refinement_level_steps");
+      if (r.has("refinement_level_particle_steps")) a.level_particle_steps = r.attribute_doubles("refinement_level_particle_steps");
       const std::vector<double> dp = r.attribute_doubles("refinement_momentum_change");
       if (dp.size() != 3) throw CheckpointError(path + ": attribute 'refinement_momentum_change' does not have 3 values");
       for (int k = 0; k < 3; ++k) a.momentum_change[k] = dp[k];

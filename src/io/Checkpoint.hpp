@@ -35,6 +35,7 @@ struct CheckpointRefinement {
   std::int64_t guard_shifts = 0;      // daughter guards shifted since t = 0, all ranks (GuardSpacing)
   std::int64_t guards_limited = 0;    // guard interpolations limited since t = 0, all ranks (GuardApply)
   std::vector<double> level_steps;    // local time stepping: the steps of each level since t = 0 (exact integers)
+  std::vector<double> level_particle_steps;  // each level's SPH particles x steps since t = 0, all ranks
   double momentum_change[3] = {0, 0, 0};  // sum over refinements of sum_f m_f u_f - m_m u_m
   double momentum_scale = 0;              // sum over refinements of m_m |u_m|
   std::vector<double> offset;        // zones x 3: displacement of each zone from its case-file box (m)
@@ -62,6 +63,10 @@ struct CheckpointHeader {
   double initial_momentum[3] = {0, 0, 0};
   std::uint64_t checksum = 0;  // of the state fields (kernels/StateHash.hpp)
   std::int64_t wall_corrections = 0;  // impermeability corrections since t = 0, all ranks (kernels/WallImpermeability.hpp)
+  // what the run has cost since t = 0 over every process that led to this checkpoint (the slowest
+  // rank's wall seconds, rank 0's CPU seconds); 0 in a checkpoint written before they were recorded
+  double run_wall_seconds = 0, run_cpu_seconds = 0;
+  std::int64_t initial_particles = 0;  // all ranks at t = 0 (open boundaries and refinement change the count); 0: not recorded
   CheckpointRefinement refinement;
   CheckpointOpen open;
 };

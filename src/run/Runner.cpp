@@ -50,7 +50,8 @@ class Checkpointer {
     return by_steps || by_wall;
   }
 
-  void write(Simulation<D>& sim, std::size_t snapshots) {
+  // cost: the run's wall and CPU seconds since t = 0 (RunTiming::cost)
+  void write(Simulation<D>& sim, std::size_t snapshots, std::pair<double, double> cost, std::size_t initial_particles) {
     const auto c0 = Clock::now();
     CheckpointHeader h;
     h.case_name = scene_.name;
@@ -63,6 +64,9 @@ class Checkpointer {
     h.initial_mass = d0.mass;
     for (int k = 0; k < 3; ++k) h.initial_momentum[k] = d0.momentum[k];
     h.checksum = state_checksum(sim);
+    h.run_wall_seconds = comm_.max(cost.first);
+    h.run_cpu_seconds = cost.second;
+    h.initial_particles = static_cast<std::int64_t>(initial_particles);
     sim.save_hooks(h);  // the impermeability guard's count, the open boundaries' state
     if (sim.refinement_on()) {
       h.refinement = refinement_state(sim);
@@ -133,6 +137,12 @@ struct RunTiming {
   double loop_seconds = 0;
   std::int64_t pair_samples = 0;
   double pair_sum = 0;
+  double wall_before = 0, cpu_before = 0;  // a restart's: what the run had cost when its checkpoint was written
+
+  double wall() const { return seconds_since(wall0); }
+  double cpu() const { return static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC; }
+  // wall and CPU seconds since t = 0, over this process and those before a restart
+  std::pair<double, double> cost() const { return {wall_before + wall(), cpu_before + cpu()}; }
 };
 
 // summary.json: the run's status, size, timing, parallel figures, scheme and error figures
@@ -152,11 +162,14 @@ nlohmann::json run_summary(const Scene& scene, const RunOptions& opt, const Simu
   j["dimension"] = D;
   j["particles"] = report.particles;
   j["steps"] = report.steps;
-  j["total_steps"] = sim.steps();
+  j["total_steps"] = report.total_steps;
   if (restarted) j["restarted_from"] = {{"file", opt.restart}, {"step", restarted->step}, {"time", restarted->time}};
   j["simulated_time"] = sim.time();
   j["wall_seconds"] = report.wall_seconds;
   j["cpu_seconds"] = report.cpu_seconds;
+  // since t = 0, over this process and those before its restarts
+  j["total_wall_seconds"] = report.total_wall_seconds;
+  j["total_cpu_seconds"] = report.total_cpu_seconds;
   j["loop_seconds"] = loop_seconds;
   j["particle_steps_per_second"] = loop_seconds > 0 ? report.particles * static_cast<double>(report.steps) / loop_seconds : 0.0;
   j["mean_neighbours"] = pair_samples > 0 ? pair_sum / pair_samples / report.particles : 0.0;
@@ -187,7 +200,7 @@ nlohmann::json run_summary(const Scene& scene, const RunOptions& opt, const Simu
                        {"local_time_stepping", scene.refinement_local_time_stepping}};
     // with local time stepping, the steps each level took since t = 0 (2^l per coarse step where it has particles)
     if (!sim.level_steps().empty()) j["refinement"]["level_steps"] = sim.level_steps();
-    // the SPH particles of each level times the steps they took, over this process's steps
+    // the SPH particles of each level times the steps they took since t = 0
     std::vector<double> work;
     for (const double w : sim.level_particle_steps()) work.push_back(comm.sum(w));
     j["level_particle_steps"] = work;
@@ -239,7 +252,11 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
   const bool root = comm.rank() == 0;
   const bool restarting = !opt.restart.empty();
   CheckpointSlice restart;
-  if (restarting) restart = read_restart<D>(scene, opt, comm);
+  if (restarting) {
+    restart = read_restart<D>(scene, opt, comm);
+    timing.wall_before = restart.header.run_wall_seconds;
+    timing.cpu_before = restart.header.run_cpu_seconds;
+  }
   Simulation<D> sim = start_simulation<D>(scene, opt, restarting ? &restart : nullptr);
   if (root) std::filesystem::create_directories(opt.out_dir);
   comm.barrier();
@@ -251,7 +268,9 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
   else recorder.start();
 
   RunReport report;
-  report.particles = static_cast<std::size_t>(global_size(sim));
+  // the particles at t = 0 (a restart's checkpoint records them; one written before it did: those at the restart)
+  report.particles = restarting && restart.header.initial_particles > 0 ? static_cast<std::size_t>(restart.header.initial_particles)
+                                                                          : static_cast<std::size_t>(global_size(sim));
   report.status = "completed";
   double last_dt = 0;
   if (!restarting && !recorder.record(sim, last_dt).finite) report.status = "diverged";
@@ -299,7 +318,7 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
       if (recorder.behind(sim)) recorder.record(sim, last_dt);
       break;
     }
-    if (checkpoints.due(sim)) checkpoints.write(sim, recorder.snapshot_count());
+    if (checkpoints.due(sim)) checkpoints.write(sim, recorder.snapshot_count(), timing.cost(), report.particles);
     if (root && opt.progress && seconds_since(timing.last_progress) >= opt.progress_interval) {
       timing.last_progress = Clock::now();
       const double el = seconds_since(timing.loop0);
@@ -309,12 +328,14 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
     }
   }
   const bool diverged = report.status == "diverged";
-  if (!diverged) checkpoints.write(sim, recorder.snapshot_count());
+  if (!diverged) checkpoints.write(sim, recorder.snapshot_count(), timing.cost(), report.particles);
   timing.loop_seconds = seconds_since(timing.loop0);
   report.steps = sim.steps() - step_start;
+  report.total_steps = sim.steps();
   report.simulated_time = sim.time();
-  report.wall_seconds = seconds_since(timing.wall0);
-  report.cpu_seconds = static_cast<double>(std::clock() - timing.cpu0) / CLOCKS_PER_SEC;
+  report.wall_seconds = timing.wall();
+  report.cpu_seconds = timing.cpu();
+  std::tie(report.total_wall_seconds, report.total_cpu_seconds) = timing.cost();
   recorder.add_figures(report.errors, sim, diverged);
   const nlohmann::json j = run_summary(scene, opt, sim, report, timing, restarting ? &restart.header : nullptr, checkpoints,
                                        recorder.snapshot_count());

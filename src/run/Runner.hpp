@@ -22,9 +22,13 @@ struct RunReport {
   std::string message;  // what went wrong, when diverged
   int signal = 0;       // the signal that interrupted the run
   std::int64_t steps = 0;
-  std::size_t particles = 0;
+  std::size_t particles = 0;  // at t = 0, all ranks
   double wall_seconds = 0, simulated_time = 0;
   double cpu_seconds = 0;  // this process's CPU time (all its threads): what other load on the machine does not inflate
+  // since t = 0 over every process that led here (a restart adds its checkpoint's): equal to
+  // steps, wall_seconds and cpu_seconds for a run not restarted
+  std::int64_t total_steps = 0;
+  double total_wall_seconds = 0, total_cpu_seconds = 0;
   std::map<std::string, double> errors;
 };
 

@@ -173,7 +173,7 @@ class Simulation {
   Refinement<D>* refinement_ = nullptr;  // the refinement hook (one of hooks_), with refinement zones
   int eval_level_ = -1;  // local time stepping: the one level evaluate() passes over (-1: all)
   std::vector<std::int64_t> level_steps_;  // local time stepping: steps each level has taken since t = 0
-  std::vector<double> level_particle_steps_;  // with zones: SPH particles x steps, per level (this rank, this process)
+  std::vector<double> level_particle_steps_;  // with zones: SPH particles x steps, per level, this rank since t = 0 (after a restart rank 0 holds the earlier all-rank totals)
   void count_particle_steps(int level);  // level < 0: every level (a global step)
 };
 

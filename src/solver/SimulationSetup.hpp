@@ -2,6 +2,7 @@
 // Simulation<D>: the set-up of a run (the lattice fill, the fluid region of the walls, a
 // checkpoint's state) and the state rows and checksums a checkpoint carries. Included by
 // SimulationImpl.hpp only.
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -109,6 +110,9 @@ Simulation<D>::Simulation(const Scene& scene, const CheckpointSlice* restart) : 
     if (walls_.moving()) update_walls(t_);
     if (scene_.refinement_local_time_stepping)
       for (const double n : restart->header.refinement.level_steps) level_steps_.push_back(static_cast<std::int64_t>(n));
+    // the work before the restart: its all-rank totals on rank 0, so that the sum over ranks goes on from them
+    level_particle_steps_ = restart->header.refinement.level_particle_steps;
+    if (comm().rank() != 0) std::fill(level_particle_steps_.begin(), level_particle_steps_.end(), 0.0);
   }
 }
 

@@ -35,6 +35,7 @@ CheckpointRefinement refinement_state(const Simulation<D>& sim) {
   c.guard_shifts = sim.comm().sum(sim.refinement().guard_shifts());  // a global count (each rank counts its own)
   c.guards_limited = sim.comm().sum(sim.refinement().guards_limited());
   for (const std::int64_t n : sim.level_steps()) c.level_steps.push_back(static_cast<double>(n));
+  for (const double w : sim.level_particle_steps()) c.level_particle_steps.push_back(sim.comm().sum(w));
   c.checksum = refinement_checksum(sim);
   return c;
 }
