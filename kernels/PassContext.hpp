@@ -64,6 +64,7 @@ struct PassContext {
   WallEos eos{1, 1, 1};            // c(rho) of (1.9): the wall pressure (4.14) and Riemann-SPH
   double nu = 0, rho0 = 0;         // the scene's viscosity (the wall terms have their own quadrature)
   double morris_factor = 1;
+  double shift_coefficient = 0.5;  // c of the shift x += -c R^2 grad C (2.109)
   // turbulence (src/solver/hooks/EddyViscosity.hpp): nu_T, and with the wall function u_* and y+
   field_view_t<field::EddyViscosity, D> nu_T;
   field_view_t<field::FrictionVelocity, D> u_star;

@@ -2,7 +2,8 @@
 // Particle shifting (Lind et al., Xu et al.; thesis 2.107-2.111), applied once
 // per time step:
 //   grad C_i = sum_j w_j (1 + f_ij) grad_i W_ij,  f_ij = 0.2 (W_ij / W(dx))^4   (2.110)-(2.111)
-//   dx_i = -0.5 R^2 grad C_i                                                    (2.109)
+//   dx_i = -c R^2 grad C_i, c = 0.5 in the thesis                               (2.109)
+// (c beyond 0.187 at R/dx = 3 makes the shift unstable on the lattice: kernels/ShiftingStability.hpp)
 // clamped to |dx_i| <= max_shift = 0.02 dx per step (not in the seed: (2.109) has
 // no time scale, so applied at every step it moves particles much faster than
 // the flow; with the clamp shifting is a slow regularisation. Measured on the
@@ -41,7 +42,7 @@ struct ShiftingPass {
   PeriodicBox<D> box;       // minimum image of the neighbours and wall points
   PeriodicBox<D> wrap_box;  // wraps the shifted positions (the integrator's)
   Kernel W;
-  double R2, half_R2, W_dx, max_shift;
+  double R2, cR2, W_dx, max_shift;  // cR2: c R^2 of (2.109)
   field_view_t<field::Position, D> x;
   field_view_t<field::Velocity, D> u;
   field_view_t<field::Density, D> rho;
@@ -94,7 +95,7 @@ struct ShiftingPass {
         }
       });
     }
-    Vec<D> dx = (-half_R2) * gradC;
+    Vec<D> dx = (-cR2) * gradC;
     if constexpr (Surface) {
       if (near_surface) {
         // n~ = -B v / |B v| (4.87), B the inverse of the NFM matrix (4.86) (gamma cancels)

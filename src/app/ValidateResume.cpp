@@ -1,5 +1,7 @@
 #include "app/ValidateResume.hpp"
 
+#include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -22,8 +24,12 @@ nlohmann::json read_json(const std::string& path) {
 
 }  // namespace
 
-nlohmann::json rung_identity(const std::string& case_file, const std::vector<std::string>& sets) {
-  return {{"case_file", case_file}, {"sets", sets}};
+nlohmann::json rung_identity(const std::string& case_file, const std::string& case_text, const std::vector<std::string>& sets) {
+  std::uint64_t h = 1469598103934665603ULL;  // FNV-1a
+  for (const unsigned char c : case_text) h = (h ^ c) * 1099511628211ULL;
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return {{"case_file", case_file}, {"case_text_fnv1a", hex}, {"sets", sets}};
 }
 
 RungState resume_state(const std::string& dir, const nlohmann::json& identity) {
@@ -34,7 +40,7 @@ RungState resume_state(const std::string& dir, const nlohmann::json& identity) {
   if (id.is_null())
     throw ResumeError(dir + ": holds output without " + rung_file() + " (a run not started by `ondine validate --resume`); remove it "
                       "or choose another --out");
-  for (const char* key : {"case_file", "sets"})
+  for (const char* key : {"case_file", "case_text_fnv1a", "sets"})
     if (!id.contains(key) || id[key] != identity[key])
       throw ResumeError(id_path + ": the rung in this folder ran with " + key + " " + (id.contains(key) ? id[key].dump() : "(missing)") +
                         ", this validation asks for " + identity[key].dump() + "; remove the folder or choose another --out");

@@ -227,6 +227,8 @@ nlohmann::json run_summary(const Scene& scene, const RunOptions& opt, const Simu
                  {"viscous_term", to_string(scene.viscous_term)},
                  {"nu", scene.nu},
                  {"morris_lattice_factor", sim.scheme().morris_factor},
+                 // c of the shift x += -c R^2 grad C (2.109), with shifting
+                 {"shifting_coefficient", scene.shifting ? nlohmann::json(sim.scheme().shift_coefficient) : nlohmann::json("-")},
                  {"consistent_laplacian", uses_consistent_laplacian(scene)},
                  {"flux", to_string(scene.flux)},
                  {"riemann_reconstruction", scene.flux == FluxScheme::Riemann ? (scene.riemann_muscl ? "muscl_minmod" : "none") : "-"},

@@ -141,7 +141,7 @@ static void read_flux(const Reader& r, const YAML::Node& sc, Scene& s) {
 void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
   if (const YAML::Node sc = root["scheme"]) {
     r.only_keys(sc, "scheme", {"viscous_term", "delta_sph", "delta_sph_form", "artificial_viscosity", "background_pressure",
-                               "time_integrator", "cfl", "shifting", "transport", "consistent_laplacian",
+                               "time_integrator", "cfl", "shifting", "shifting_coefficient", "transport", "consistent_laplacian",
                                "wall_velocity_reconstruction", "wall_contact", "renormalised_continuity", "density_gradient", "flux",
                                "riemann", "ale", "pair_list"});
     if (sc["pair_list"]) s.half_pair_list = r.word(sc["pair_list"], "scheme.pair_list", {"full", "half"}) == "half";
@@ -178,6 +178,17 @@ void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
         r.fail(t, "scheme.transport", "disagrees with scheme.shifting; give one of the two");
       s.shifting = w == "shifting";
       s.ale = w == "ale";
+    }
+    // scheme.shifting_coefficient: c of (2.109), a number or stable (kernels/ShiftingStability.hpp)
+    if (const YAML::Node c = sc["shifting_coefficient"]) {
+      if (!s.shifting) r.fail(c, "scheme.shifting_coefficient", "is read with scheme.transport: shifting only");
+      if (c.IsScalar() && c.Scalar() == "stable") {
+        s.shifting_coefficient_stable = true;
+      } else {
+        s.shifting_coefficient = r.positive(c, "scheme.shifting_coefficient", " (c of x += -c R^2 grad C, thesis 2.109: 0.5) or stable");
+        if (s.shifting_coefficient > 1)
+          r.fail(c, "scheme.shifting_coefficient", "expected 0 < c <= 1 (the thesis' 0.5), or stable");
+      }
     }
     // scheme.ale: the transport-velocity law's characteristic velocity U_char = Ma c0 (2.113)
     if (const YAML::Node a = sc["ale"]) {

@@ -248,6 +248,10 @@ struct Scene {
   double artificial_viscosity = 0.0;  // alpha of (2.58); 0 = off
   bool background_pressure = false;   // tensile correction (2.105)
   bool shifting = false;              // particle shifting (2.107)-(2.111) (scheme.transport: shifting)
+  // c of the shift x += -c R^2 grad C (2.109): the thesis' 0.5, or (shifting_coefficient_stable)
+  // the largest that damps the lattice's every mode monotonically (kernels/ShiftingStability.hpp)
+  double shifting_coefficient = 0.5;
+  bool shifting_coefficient_stable = false;
   bool ale = false;                   // the transport-velocity law of Oger et al. (2.112)-(2.115) (scheme.transport: ale)
   double ale_mach = 0.1;              // U_char = Ma c0 of (2.113)
   bool ale_tangential_cut = true;     // scheme.ale.cut_supports: tangential (kernels/OgerVelocityLaw.hpp); false: free

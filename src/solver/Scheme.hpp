@@ -53,6 +53,7 @@ struct CompiledScheme {
   long (*guard_spacing)(const PassContext<D>&, const Kokkos::View<double* [D], Kokkos::LayoutRight, MemSpace>& shift,
                         bool daughters, bool mothers) = nullptr;
   double morris_factor = 1;  // kappa of kernels/MorrisLatticeFactor.hpp (Morris viscosity only)
+  double shift_coefficient = 0.5;  // c of the shift x += -c R^2 grad C (2.109) (Scene::shifting_coefficient)
 };
 
 // The compiled scheme of a scene (SchemePasses.hpp).

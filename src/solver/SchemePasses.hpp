@@ -9,6 +9,7 @@
 #include "kernels/ProbeSum.hpp"
 #include "kernels/RenormalisedContinuity.hpp"
 #include "kernels/ShiftingPass.hpp"
+#include "kernels/ShiftingStability.hpp"
 #include "kernels/WallForces.hpp"
 #include "solver/WallFluxDispatch.hpp"
 #include "kernels/WaveGauge.hpp"
@@ -138,10 +139,10 @@ void shifting(const PassContext<D>& c, const field_view_t<field::Position, D>& x
   const K W(c.R);
   auto launch = [&](auto pass) { Kokkos::parallel_for("ondine::Shifting", range(c), pass); };
   if (c.free_surface.is_allocated())
-    launch(ShiftingPass<D, K, Walls, true>{c.list, c.box, c.wrap_box, W, c.R * c.R, 0.5 * c.R * c.R, W.value(c.dx), max_shift, c.x, c.u,
+    launch(ShiftingPass<D, K, Walls, true>{c.list, c.box, c.wrap_box, W, c.R * c.R, c.shift_coefficient * c.R * c.R, W.value(c.dx), max_shift, c.x, c.u,
                                            c.rho, c.m, x_out, u_out, rho_out, c.wall, c.wall_cells, c.free_surface});
   else
-    launch(ShiftingPass<D, K, Walls>{c.list, c.box, c.wrap_box, W, c.R * c.R, 0.5 * c.R * c.R, W.value(c.dx), max_shift, c.x, c.u, c.rho,
+    launch(ShiftingPass<D, K, Walls>{c.list, c.box, c.wrap_box, W, c.R * c.R, c.shift_coefficient * c.R * c.R, W.value(c.dx), max_shift, c.x, c.u, c.rho,
                                      c.m, x_out, u_out, rho_out, c.wall, c.wall_cells, {}});
 }
 
@@ -259,6 +260,8 @@ CompiledScheme<D> compile(const Scene& s) {
   c.wall_traction = levels ? &wall_traction<D, K, true> : &wall_traction<D, K, false>;
   c.guard_spacing = walls ? &guard_spacing<D, K, true> : &guard_spacing<D, K, false>;
   if (s.viscous_term == ViscousTerm::Morris) c.morris_factor = morris_lattice_factor<D>(K(s.R()), s.R(), s.dx);
+  // the same at every level (R / dx is)
+  if (s.shifting) c.shift_coefficient = s.shifting_coefficient_stable ? 1.0 / shifting_mode_rate<D>(K(s.R()), s.R(), s.dx) : s.shifting_coefficient;
   return c;
 }
 

@@ -100,6 +100,7 @@ PassContext<D> Simulation<D>::context(const LevelSpan<D>& L) const {
   c.nu = scene_.nu;
   c.rho0 = scene_.rho0;
   c.morris_factor = scheme_.morris_factor;
+  c.shift_coefficient = scheme_.shift_coefficient;
   if (scene_.turbulence.on()) {
     const Turbulence& tu = scene_.turbulence;
     c.mixing_length = MixingLength<D>{tu.model == TurbulenceModel::Smagorinsky ? tu.smagorinsky_constant * L.dx : tu.length, tu.axis,
