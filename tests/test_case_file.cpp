@@ -218,7 +218,7 @@ time: {duration: 1, output_interval: 1}
   CHECK_THROWS_WITH(ondine::parse_case(y, "wall.yaml"), Catch::Contains("key 'walls[0].points': a wall must lie within the domain along the periodic axis x"));
 }
 
-TEST_CASE("Every shipped case file selects a built flux scheme; another is refused naming its keys", "[unit][case]") {
+TEST_CASE("Every shipped case file selects a built flux scheme, and another is refused naming its keys", "[unit][case]") {
   namespace fs = std::filesystem;
   int n = 0;
   for (const auto& e : fs::directory_iterator(std::string(ONDINE_SOURCE_DIR) + "/cases")) {

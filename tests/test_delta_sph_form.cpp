@@ -83,7 +83,7 @@ std::pair<double, double> acoustic_mode(const std::string& form) {
 
 }  // namespace
 
-TEST_CASE("delta-SPH, hydrostatic form: no density rate in still water; on a disturbed state the graph Laplacian of the dynamic density",
+TEST_CASE("delta-SPH, hydrostatic form: no density rate in still water, and on a disturbed state the graph Laplacian of the dynamic density",
           "[unit][scheme][delta_sph]") {
   // linear EOS: the hydrostatic fill's density is exactly linear in depth, and both forms vanish
   // (a linear field's renormalised gradient is exact, and Psi_ij . grad W_ij is then zero pair by pair)

@@ -129,7 +129,7 @@ TEST_CASE("scheme.pair_list: half leaves the dam-break front as full does", "[sc
   CHECK(d < 1e-3);
 }
 
-TEST_CASE("scheme.pair_list: a bad value is refused; half falls back to full where the half-list pass is not built", "[unit][case]") {
+TEST_CASE("scheme.pair_list: a bad value is refused, and half falls back to full where the half-list pass is not built", "[unit][case]") {
   CHECK_THAT(test::case_refusal("dam_break_2d.yaml", {"scheme.pair_list=quarter"}),
              Contains("scheme.pair_list") && Contains("full") && Contains("half"));
   const auto half = [](const std::string& file, std::vector<std::string> sets) {

@@ -230,7 +230,7 @@ TEST_CASE("Riemann-SPH with the ALE transport: dam break (a/25) within Martin & 
   }
 }
 
-TEST_CASE("scheme.transport: ale and scheme.riemann.variant: vila are read; the unsupported combinations are refused", "[unit][case]") {
+TEST_CASE("scheme.transport: ale and scheme.riemann.variant: vila are read, and the unsupported combinations are refused", "[unit][case]") {
   const Scene s = load_case(src + "/cases/dam_break_2d.yaml", {"scheme.flux=riemann", "scheme.delta_sph=0", "scheme.density_gradient=stage",
                                                                 "scheme.transport=ale", "scheme.ale.mach=0.05", "scheme.riemann.variant=vila"});
   CHECK(s.ale);
