@@ -179,9 +179,9 @@ void read_scheme(const Reader& r, YAML::Node& root, Scene& s) {
       s.shifting = w == "shifting";
       s.ale = w == "ale";
     }
-    // scheme.shifting_coefficient: c of (2.109), a number or stable (kernels/ShiftingStability.hpp)
+    // scheme.shifting_coefficient: c of (2.109), a number or stable (kernels/ShiftingStability.hpp);
+    // read whatever the transport (an override may switch the shift off), used with shifting
     if (const YAML::Node c = sc["shifting_coefficient"]) {
-      if (!s.shifting) r.fail(c, "scheme.shifting_coefficient", "is read with scheme.transport: shifting only");
       if (c.IsScalar() && c.Scalar() == "stable") {
         s.shifting_coefficient_stable = true;
       } else {
