@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <algorithm>
 #include <map>
 #include <sstream>
@@ -182,9 +181,7 @@ RunReport run_one(const ValidateOptions& opt, const ValidationCase& c, const Run
   ro.out_dir = opt.out_dir + "/" + dir;
   ro.progress = false;
   if (opt.resume) {
-    std::ifstream in(opt.source_dir + "/" + file, std::ios::binary);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const nlohmann::json id = validate::rung_identity(file, text, overrides);
+    const nlohmann::json id = validate::rung_identity(opt.source_dir, file, overrides);
     const RungState st = validate::resume_state(ro.out_dir, id);
     if (st.kind == RungState::Kind::Completed) {
       std::fprintf(stderr, "ondine validate: %s completed before (%s/summary.json), taken as it is\n", dir.c_str(), ro.out_dir.c_str());

@@ -24,9 +24,10 @@ nlohmann::json read_json(const std::string& path) {
 
 }  // namespace
 
-nlohmann::json rung_identity(const std::string& case_file, const std::string& case_text, const std::vector<std::string>& sets) {
+nlohmann::json rung_identity(const std::string& source_dir, const std::string& case_file, const std::vector<std::string>& sets) {
+  std::ifstream in(source_dir + "/" + case_file, std::ios::binary);
   std::uint64_t h = 1469598103934665603ULL;  // FNV-1a
-  for (const unsigned char c : case_text) h = (h ^ c) * 1099511628211ULL;
+  for (char c; in.get(c);) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ULL;
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
   return {{"case_file", case_file}, {"case_text_fnv1a", hex}, {"sets", sets}};

@@ -28,9 +28,9 @@ struct RungState {
 // The name of the file in a rung folder that says what ran there
 inline const char* rung_file() { return "validate_rung.json"; }
 
-// What identifies a rung's run: the case file (relative to the source tree), a hash of its text
+// What identifies a rung's run: the case file (relative to source_dir), a hash of its text
 // (FNV-1a, 64 bits: an edited case file is another run), and every override in order
-nlohmann::json rung_identity(const std::string& case_file, const std::string& case_text, const std::vector<std::string>& sets);
+nlohmann::json rung_identity(const std::string& source_dir, const std::string& case_file, const std::vector<std::string>& sets);
 
 // The state of the rung folder `dir` against `identity`; throws ResumeError when the folder
 // holds a run of other settings, an unreadable validate_rung.json or summary.json, or a run
