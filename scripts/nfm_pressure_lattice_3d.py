@@ -9,14 +9,21 @@ extrapolated to the wall point (4.30) give, divided by the analytical Shepard fa
   E_i = sum_j V_j grad_i W_ij + sum_q s_q W_iq n_out            (zero in the continuum),
   M_i = sum_j V_j grad_i W_ij (x) (x_j - x_i) + the wall's part   (gamma_i I in the continuum).
 E_i is the uniform-pressure defect (it scales as 1/dx), M_i / gamma_i the linear one (fixed at
-fixed R/dx). usage: nfm_pressure_lattice_3d.py [R/dx] [dx m] [H m]"""
+fixed R/dx). usage: nfm_pressure_lattice_3d.py [R/dx] [dx m] [H m] [--first-row]
+
+--first-row: what holds a particle of the first row off the floor. E_z dx of one particle at a
+height h above the floor (the rest of the lattice in place: E_z < 0 pushes it up, with
+du_z = -(2 P / rho) E_z / (gamma dx)), and of one on the floor (h = 0) whose row has the next
+row at a gap g above it (the rows beyond at dx): where E_z >= 0 nothing pushes it off."""
 import sys
 
 import numpy as np
 
-Rdx = float(sys.argv[1]) if len(sys.argv) > 1 else 2.5
-dx = float(sys.argv[2]) if len(sys.argv) > 2 else 0.1
-H = float(sys.argv[3]) if len(sys.argv) > 3 else 1.0
+first_row = "--first-row" in sys.argv
+argv = [a for a in sys.argv if a != "--first-row"]
+Rdx = float(argv[1]) if len(argv) > 1 else 2.5
+dx = float(argv[2]) if len(argv) > 2 else 0.1
+H = float(argv[3]) if len(argv) > 3 else 1.0
 rho, g = 1000.0, 9.81
 R = Rdx  # lengths in dx below
 
@@ -48,6 +55,33 @@ def gamma(d):  # the analytical Shepard factor at distance d from the floor
 
 
 n = int(np.ceil(R)) + 1
+
+
+def E_z_at(h, heights):
+    """E_z dx of a particle at height h (in dx) above the floor, moved there from the lowest site of
+    its column; its neighbours on the lattice's columns at the heights given"""
+    E = 0.0
+    for i in range(-n, n + 1):
+        for j in range(-n, n + 1):
+            for k, z in enumerate(heights):
+                dz = h - z
+                r = np.sqrt(i * i + j * j + dz * dz)
+                if (i == 0 and j == 0 and k == 0) or r >= R:
+                    continue
+                E += dW(r) / r * dz  # (grad_i W_ij)_z
+    return E - plane(h)  # the floor's sum_q s_q W_iq n_out,z = -(integral of W over the plane)
+
+
+if first_row:
+    lattice = [k + 0.5 for k in range(n + 2)]
+    print(f"R/dx = {Rdx}: one particle of the first row (dx/2) moved to a height h, the lattice in place")
+    for h in (0.5, 0.4, 0.3, 0.2, 0.1, 0.05, 0.0):
+        print(f"  h = {h:4.2f} dx: E_z dx {E_z_at(h, lattice):+.4f}")
+    print("a particle on the floor, its row on the floor, the next row a gap g above, then every dx")
+    for g in (1.0, 0.9, 0.8, 0.7, 0.6):
+        print(f"  g = {g:3.1f} dx: E_z dx {E_z_at(0.0, [0.0] + [g + k for k in range(n + 2)]):+.4f}")
+    sys.exit(0)
+
 print(f"R/dx = {Rdx}, dx = {dx} m, H = {H} m: row, gamma, E_z dx, M_zz/gamma, du_z (m/s^2): uniform part, linear part, total")
 for row in range(4):
     d = row + 0.5
