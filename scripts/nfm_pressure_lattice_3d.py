@@ -57,19 +57,28 @@ def gamma(d):  # the analytical Shepard factor at distance d from the floor
 n = int(np.ceil(R)) + 1
 
 
-def E_z_at(h, heights):
-    """E_z dx of a particle at height h (in dx) above the floor, moved there from the lowest site of
-    its column; its neighbours on the lattice's columns at the heights given"""
-    E = 0.0
+def fluid_sums(h, heights, own):
+    """sum_j V_j (grad_i W_ij)_z and sum_j V_j (grad_i W_ij)_z (z_j - z_i), in units of dx, for a
+    particle at height h (in dx) whose neighbours sit on the lattice's columns at the heights given,
+    but for its own column's site number own (the site it occupies, or left empty)"""
+    E = M = 0.0
     for i in range(-n, n + 1):
         for j in range(-n, n + 1):
             for k, z in enumerate(heights):
                 dz = h - z
                 r = np.sqrt(i * i + j * j + dz * dz)
-                if (i == 0 and j == 0 and k == 0) or r >= R:
+                if (i == 0 and j == 0 and k == own) or r >= R:
                     continue
-                E += dW(r) / r * dz  # (grad_i W_ij)_z
-    return E - plane(h)  # the floor's sum_q s_q W_iq n_out,z = -(integral of W over the plane)
+                gz = dW(r) / r * dz  # (grad_i W_ij)_z
+                E += gz
+                M += gz * (z - h)
+    return E, M
+
+
+def E_z_at(h, heights):
+    """E_z dx of a particle at height h above the floor, moved there from the lowest site of its
+    column; the floor's sum_q s_q W_iq n_out,z is minus the integral of W over the plane"""
+    return fluid_sums(h, heights, 0)[0] - plane(h)
 
 
 if first_row:
@@ -85,16 +94,7 @@ if first_row:
 print(f"R/dx = {Rdx}, dx = {dx} m, H = {H} m: row, gamma, E_z dx, M_zz/gamma, du_z (m/s^2): uniform part, linear part, total")
 for row in range(4):
     d = row + 0.5
-    E = M = 0.0
-    for i in range(-n, n + 1):
-        for j in range(-n, n + 1):
-            for k in range(-row, n + 1):
-                r = np.sqrt(i * i + j * j + k * k)
-                if (i, j, k) == (0, 0, 0) or r >= R:
-                    continue
-                gz = dW(r) / r * (-k)  # (grad_i W_ij)_z, x_ij = -(i, j, k) dx
-                E += gz
-                M += gz * k
+    E, M = fluid_sums(d, [k + 0.5 for k in range(row + n + 1)], row)
     G = plane(d)
     E_z = E - G          # n_out = -z on the floor
     M_zz = M + d * G     # the wall term's sum_q s_q W (z_q - z_i) n_z
