@@ -64,6 +64,12 @@ ONDINE_FIELD_(DissipationRateNext, "epsilon_next", double, false, false);
 ONDINE_FIELD(MeanVelocity, "mean_velocity", double, true);
 ONDINE_FIELD_(LangevinVelocity, "langevin_velocity", double, true, false);
 ONDINE_FIELD_(LangevinOffset, "langevin_offset", double, true, false);
+// turbulence.langevin.mean_gradient: averaged: the gradient of the means averaged along the
+// particle's path over the model's turnover time k / epsilon, one row per field (a state field:
+// in checkpoints)
+ONDINE_FIELD_(LangevinGradientX, "langevin_gradient_x", double, true, false);
+ONDINE_FIELD_(LangevinGradientY, "langevin_gradient_y", double, true, false);
+ONDINE_FIELD_(LangevinGradientZ, "langevin_gradient_z", double, true, false);
 // Integrator stage storage (not written to snapshots): the state y0 at the start
 // of the step and the RK4 weighted sum of the stage derivatives. Particle fields,
 // so that they follow a particle that changes rank in the middle of a step.

@@ -11,13 +11,12 @@
 
 namespace ondine {
 
-// <grad u>_i stored as particle fields, one row (the gradient of u_k) per field: written by
-// DensityGradientPass for Riemann-SPH's MUSCL reconstruction (kernels/terms/RiemannLeduc.hpp).
-template <int D>
-struct VelocityGradientRows {
-  field_view_t<field::VelocityGradientX, D> g0;
-  field_view_t<field::VelocityGradientY, D> g1;
-  field_view_t<field::VelocityGradientZ, D> g2;  // 3D only
+// A gradient stored as particle fields, one row (the gradient of u_k) per field TX, TY, TZ
+template <int D, class TX, class TY, class TZ>
+struct GradientRows {
+  field_view_t<TX, D> g0;
+  field_view_t<TY, D> g1;
+  field_view_t<TZ, D> g2;  // 3D only
   KOKKOS_INLINE_FUNCTION double operator()(int i, int k, int b) const { return k == 0 ? g0(i, b) : k == 1 ? g1(i, b) : g2(i, b); }
   KOKKOS_INLINE_FUNCTION Mat<D> load(int i) const {
     Mat<D> g;
@@ -33,6 +32,11 @@ struct VelocityGradientRows {
     }
   }
 };
+
+// <grad u>_i: written by DensityGradientPass for Riemann-SPH's MUSCL reconstruction
+// (kernels/terms/RiemannLeduc.hpp)
+template <int D>
+using VelocityGradientRows = GradientRows<D, field::VelocityGradientX, field::VelocityGradientY, field::VelocityGradientZ>;
 
 template <int D>
 struct VelocityGradientSum {

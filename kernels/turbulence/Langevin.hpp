@@ -23,6 +23,17 @@
 //   dk/dt = P + G_ij R_ij + (d/2) C0 epsilon = P - epsilon,
 // gives C0 = (2/d) (C1 - 1 + C2 P / epsilon), and epsilon is the mixing length's production
 // (P / epsilon = 1): C0 = (2/d) (C1 - 1 + C2) (0.933 in 3D, 1.4 in 2D).
+// With turbulence.langevin.mean_gradient: averaged the model reads, in place of grad<u>, its
+// average along the particle's path over the model's turnover time k / epsilon (the Reynolds
+// average as a time average; the time-averaging of the means in particle PDF methods, Muradoglu,
+// Jenny, Pope & Caughey 1999), exponential in time:
+//   gbar <- gbar + w (grad<u> - gbar),  w = max(dt / (t + dt), 1 - exp(-dt sqrt(C_mu) sbar)),
+// sbar = sqrt(2 S:S) of gbar before the update (epsilon / k = sqrt(C_mu) sbar), and the running
+// mean since t = 0 where that is the longer memory (w = 1 at the first step: gbar = grad<u>; a
+// layer started uniform has sbar = 0). epsilon, k, nu_T and the drift's C2 term then read gbar;
+// the first-order mean correction keeps the instantaneous grad<u> (it interpolates the step's
+// field). The fluctuations' own strain, which the filtered means carry and epsilon ~ s^3 feeds
+// back, averages out over the turnover time; the mean shear does not.
 // LangevinStep advances u' over the step dt from the step's end state, the isotropic relaxation
 // implicit (stable for any step), into a scratch field:
 //   u'_1 = (u' + dt C2 grad<u> u' + sqrt(C0 epsilon dt) xi) / (1 + dt C1 epsilon / (2 k)),
@@ -43,6 +54,8 @@ struct LangevinConstants {
   std::uint64_t seed = 0;
   std::int64_t step = 0;  // the step advanced (set by the hook)
   double dt = 0;
+  bool averaged = false;  // turbulence.langevin.mean_gradient: averaged
+  double time = 0;        // the step's start (set by the hook): the running mean's age
 
   // C0 of Pope's consistency relation with P / epsilon = 1, in d dimensions
   static double consistent_c0(double c1, double c2, int d) { return 2.0 / d * (c1 - 1.0 + c2); }
@@ -81,6 +94,15 @@ KOKKOS_INLINE_FUNCTION Vec<D> langevin_fluctuation(const Vec<D>& up, const Mat<D
   }
   return out;
 }
+
+// the weight w of the step's gradient in the path average gbar (above)
+KOKKOS_INLINE_FUNCTION double langevin_average_weight(const double dt, const double t, const double s_bar, const double c_mu) {
+  const double running = dt / (t + dt), turnover = 1.0 - kmath::exp(-dt * kmath::sqrt(c_mu) * s_bar);
+  return running > turnover ? running : turnover;
+}
+
+template <int D>
+using LangevinGradientRows = GradientRows<D, field::LangevinGradientX, field::LangevinGradientY, field::LangevinGradientZ>;
 
 template <int D, class Kernel>
 struct LangevinMean {
@@ -133,6 +155,7 @@ struct LangevinStep {
   field_view_t<field::TurbulentKineticEnergy, D> k;
   field_view_t<field::DissipationRate, D> eps;
   field_view_t<field::LangevinVelocity, D> u_next;
+  LangevinGradientRows<D> mean_gradient;            // gbar (c.averaged only): read and advanced
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<D> xi = load<D>(x, i), ui = load<D>(u, i), ut = load<D>(mean, i);
@@ -140,8 +163,16 @@ struct LangevinStep {
     for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>& xij, const double r) {
       S.add(m(j) / rho(j), xij, (W.derivative(r) / r) * xij, load<D>(mean, j) - ut);
     });
-    const Mat<D> g = S.gradient();
-    const Vec<D> um = ut + (-1.0) * (g * load<D>(offset, i));
+    const Mat<D> g_step = S.gradient();
+    const Vec<D> um = ut + (-1.0) * (g_step * load<D>(offset, i));
+    Mat<D> g = g_step;
+    if (c.averaged) {
+      const Mat<D> before = mean_gradient.load(i);
+      const double w = langevin_average_weight(c.dt, c.time, strain_rate_magnitude<D>(before), c.c_mu);
+      for (int a = 0; a < D; ++a)
+        for (int b = 0; b < D; ++b) g.a[a][b] = before.a[a][b] + w * (g_step.a[a][b] - before.a[a][b]);
+      mean_gradient.store(i, g);
+    }
     const double s = strain_rate_magnitude<D>(g), L = length(xi);
     const double nt = L * L * s, e = nt * s * s;  // nu_T (V&I §4.1.1), epsilon = nu_T s^2
     Vec<D> noise;

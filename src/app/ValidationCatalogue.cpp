@@ -394,6 +394,12 @@ const std::vector<ValidationCase>& catalogue() {
        stable({{"mean_velocity_l2", 0.1}, {"wall_leaks", 0.5}}), {}, {},
        {"kappa_fit", "kappa_error", "fluctuation_ratio", "friction_velocity_error", "velocity_l2", "y_plus_first_row"},
        {"time.duration=5"}},
+      // the same with the gradient of the means averaged along the particles' paths over the
+      // model's turnover time k / epsilon (turbulence.langevin.mean_gradient: averaged)
+      {"turbulent_channel_langevin_averaged_2d", "cases/turbulent_channel_langevin_2d.yaml", 0.5, {{0.025, false}, {0.0125, true}},
+       stable({{"mean_velocity_l2", 0.25}, {"wall_leaks", 0.5}}), {"turbulence.langevin.mean_gradient=averaged"}, {},
+       {"kappa_fit", "kappa_error", "fluctuation_ratio", "friction_velocity_error", "velocity_l2", "y_plus_first_row"},
+       {"time.duration=5"}},
       // SPHERIC Test 2 with Smagorinsky's LES closure (C_s = 0.12, the peer's) in place of the
       // artificial viscosity, water's nu = 1e-6 m^2/s, beside the laminar record: the first
       // impact's pressures, their noise (RMS against the measured series) and the heights; the

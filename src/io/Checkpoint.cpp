@@ -49,7 +49,9 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, std::i
     names.push_back("open_role");
   }
   // k-epsilon's transported state (solver/CheckpointFields.hpp), where the run has it
-  for (const char* name : {"k", "epsilon"})
+  // k-epsilon's transported state and the Langevin model's path-averaged gradient
+  // (solver/CheckpointFields.hpp), where the run has them
+  for (const std::string& name : optional_checkpoint_fields())
     if (fields.count(name)) names.push_back(name);
   for (const std::string& name : names) {
     const auto it = fields.find(name);
@@ -123,15 +125,15 @@ CheckpointSlice read_checkpoint(const std::string& path, const Communicator& com
       if (!r.has("open_role")) throw CheckpointError(path + ": dataset 'open_role' is missing (the checkpoint of a run with open boundaries holds it)");
       names.push_back("open_role");
     }
-    for (const char* name : {"k", "epsilon"})  // written by a k-epsilon run
-      if (r.has(name)) names.push_back(name);
+    for (const std::string& name : optional_checkpoint_fields())  // written by a k-epsilon or Langevin run
+      if (r.has(name.c_str())) names.push_back(name);
     const std::int64_t first = h.particles * comm.rank() / comm.size();
     s.rows = h.particles * (comm.rank() + 1) / comm.size() - first;
     for (const std::string& name : names) {
       std::int64_t rows = 0;
       int comps = 0;
       r.shape(name, rows, comps);
-      const int expect = (name == "position" || name == "velocity") ? h.dimension : 1;
+      const int expect = (name == "position" || name == "velocity" || name.rfind("langevin_gradient_", 0) == 0) ? h.dimension : 1;
       if (rows != h.particles || comps != expect)
         throw CheckpointError(path + ": dataset '" + name + "' has " + std::to_string(rows) + " x " + std::to_string(comps) +
                               " values, expected " + std::to_string(h.particles) + " x " + std::to_string(expect));

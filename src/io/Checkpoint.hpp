@@ -77,6 +77,13 @@ inline const std::vector<std::string>& checkpoint_fields() {
   return f;
 }
 
+// The fields a run has where its model does (field labels of kernels/Fields.hpp): k-epsilon's k
+// and epsilon (one value per particle), the Langevin model's path-averaged gradient (rows of D)
+inline const std::vector<std::string>& optional_checkpoint_fields() {
+  static const std::vector<std::string> f = {"k", "epsilon", "langevin_gradient_x", "langevin_gradient_y", "langevin_gradient_z"};
+  return f;
+}
+
 // The APR fields (field labels of kernels/Fields.hpp), one value per particle,
 // written and read only with refinement zones.
 inline const std::vector<std::string>& checkpoint_refinement_fields() {

@@ -19,6 +19,11 @@ void for_each_checkpoint_field(const ParticleSet<D>& p, bool refinement, F&& f) 
     f(field::TurbulentKineticEnergy{});
     f(field::DissipationRate{});
   }
+  if (p.has(field::LangevinGradientX{})) {  // the Langevin model's path-averaged gradient
+    f(field::LangevinGradientX{});
+    f(field::LangevinGradientY{});
+    if (D == 3) f(field::LangevinGradientZ{});
+  }
   if (!refinement) return;
   f(field::AprBirthLevel{});
   f(field::AprLevel{});

@@ -161,7 +161,8 @@ void load_checkpoint(ParticleSet<D>& p, const CheckpointSlice& c, bool refinemen
     const auto found = c.fields.find(decltype(tag)::label);
     if (found == c.fields.end())
       throw CheckpointError(std::string("the checkpoint has no dataset '") + decltype(tag)::label +
-                            "', which this case needs (k and epsilon: a checkpoint of a run without k-epsilon)");
+                            "', which this case needs (k and epsilon: a checkpoint of a run without k-epsilon; "
+                            "langevin_gradient_*: of a run without turbulence.langevin.mean_gradient: averaged)");
     const std::vector<double>& rows = found->second;
     const int w = exchange::width_of<V>();
     exchange::Rows dev("ondine::Restart::rows", c.rows, w);

@@ -118,7 +118,8 @@ template <int D, class K>
 void langevin_step(const PassContext<D>& c) {
   Kokkos::parallel_for("ondine::Langevin::step", range(c),
                        LangevinStep<D, K>{c.list, c.box, K(c.R), c.R * c.R, c.x, c.u, c.rho, c.m, c.id, c.mixing_length, c.langevin,
-                                          c.mean_u, c.langevin_offset, c.nu_T, c.k, c.eps, c.u_langevin});
+                                          c.mean_u, c.langevin_offset, c.nu_T, c.k, c.eps, c.u_langevin,
+                                          c.langevin_gradient});
 }
 
 // max_i kappa_i of the no-slip wall term (4.85) (kernels/WallFluxPass.hpp)

@@ -81,6 +81,9 @@ PassContext<D> Simulation<D>::context(const LevelSpan<D>& L) const {
   take(c.mean_u, field::MeanVelocity{});
   take(c.u_langevin, field::LangevinVelocity{});
   take(c.langevin_offset, field::LangevinOffset{});
+  take(c.langevin_gradient.g0, field::LangevinGradientX{});
+  take(c.langevin_gradient.g1, field::LangevinGradientY{});
+  take(c.langevin_gradient.g2, field::LangevinGradientZ{});
   for (int k = 0; k < D; ++k) c.body[k] = scene_.gravity[k] + scene_.body_force[k];
   // the pair terms' coefficients at the level's radius; the lattice factor scales the plain
   // Morris term, the consistent one has its own weights
@@ -107,6 +110,7 @@ PassContext<D> Simulation<D>::context(const LevelSpan<D>& L) const {
                                       tu.kappa, tu.bed, tu.depth, tu.plane};
     c.k_eps = KEpsilonConstants{tu.c_mu, tu.c1, tu.c2, tu.sigma_k, tu.sigma_e, 1e-10 * tu.initial_k, 1e-10 * tu.initial_epsilon};
     c.langevin = LangevinConstants{tu.langevin_c1, tu.langevin_c2, tu.langevin_c0, tu.c_mu, tu.seed};
+    c.langevin.averaged = tu.langevin_averaged;
     c.log_law = LogLaw::make(tu.kappa, scene_.nu, tu.smooth_constant, tu.wall_function == WallLaw::Rough ? tu.roughness : 0.0,
                              tu.rough_constant);
   }

@@ -21,7 +21,9 @@ template <int D>
 class EddyViscosity final : public StepHook<D> {
  public:
   explicit EddyViscosity(const Scene& s)
-      : k_eps_(s.turbulence.model == TurbulenceModel::KEpsilon), langevin_(s.turbulence.model == TurbulenceModel::Langevin) {}
+      : k_eps_(s.turbulence.model == TurbulenceModel::KEpsilon),
+        langevin_(s.turbulence.model == TurbulenceModel::Langevin),
+        averaged_(langevin_ && s.turbulence.langevin_averaged) {}
   const char* name() const override { return "eddy_viscosity"; }
   void allocate(ParticleSet<D>& p) override {
     p.allocate(field::EddyViscosity{});
@@ -33,6 +35,11 @@ class EddyViscosity final : public StepHook<D> {
       p.allocate(field::MeanVelocity{});
       p.allocate(field::LangevinVelocity{});
       p.allocate(field::LangevinOffset{});
+    }
+    if (averaged_) {  // the path-averaged gradient: a state field (zero until the first step sets it)
+      p.allocate(field::LangevinGradientX{});
+      p.allocate(field::LangevinGradientY{});
+      if (D == 3) p.allocate(field::LangevinGradientZ{});
     }
     if (!k_eps_) return;
     p.allocate(field::TurbulentKineticEnergy{});
@@ -89,6 +96,7 @@ class EddyViscosity final : public StepHook<D> {
         PassContext<D> c = s.context(L);
         c.langevin.dt = dt;
         c.langevin.step = s.steps();
+        c.langevin.time = s.time();
         s.scheme().langevin_step(c);
       }
     auto u = p.get(field::Velocity{});
@@ -105,7 +113,7 @@ class EddyViscosity final : public StepHook<D> {
   }
 
  private:
-  bool k_eps_, langevin_;
+  bool k_eps_, langevin_, averaged_;
 };
 
 }  // namespace ondine
