@@ -11,7 +11,9 @@ flipped), averaged over x and over the snapshots:
     stress the momentum balance needs, u_*^2 (1 - z/h) = F (h - z), and against nu_T dU/dz (the
     mixing length's; the model's homogeneous state gives (1 - C2) C0 / (C1^2 C_mu) = 1.92 times it);
   - the drift's stress: the row means of the drift -C1/2 (epsilon/k) u'_x + C2 (dU/dz) u'_z, with u'
-    the snapshot's velocity less its kernel mean (`mean_velocity`), summed from mid-channel down.
+    the snapshot's velocity less its kernel mean (`mean_velocity`), summed from mid-channel down;
+  - the particles' dispersion across the flow: the root-mean-square z-displacement from t = FROM
+    (by id, over the particles 0.1 m or more from the walls then) and <dz^2> / (2 t).
 usage: langevin_channel_stresses.py RUN_FOLDER [FROM]"""
 import glob
 import re
@@ -72,3 +74,18 @@ for i in range(len(z)):
 band = (z > 0.05) & (z < 0.4)
 print(f"over 0.05 < z < 0.4 m: -R12 / needed {np.mean(-R12[band] / (F * (h - z[band]))):.3f}, R22/k {np.mean(R22[band] / K[band]):.3f}, "
       f"R11/k {np.mean(R11[band] / K[band]):.3f}, drift's stress / needed {np.mean(drift_stress[band] / (F * (h - z[band] + dz / 2))):.3f}; molecular nu dU/dz / needed at most {np.max(3.23e-5 * S[band] / (F * (h - z[band]))):.3f}")
+
+# the particles' dispersion across the flow from the first snapshot used
+first = None
+for path, t in zip(files, times):
+    if t < t_from:
+        continue
+    d = h5py.File(path, "r")
+    order = np.argsort(d["id"][:])
+    z = d["position"][:][order, 1]
+    if first is None:
+        first, t_first = z, t
+        away = np.minimum(z, 1.0 - z) >= 0.1
+        continue
+    dz2 = np.mean((z - first)[away] ** 2)
+    print(f"dispersion after {t - t_first:5.1f} s: rms {np.sqrt(dz2):.4f} m, <dz^2>/(2t) {dz2 / (2 * (t - t_first)):.2e} m^2/s")
