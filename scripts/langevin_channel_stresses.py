@@ -43,22 +43,25 @@ for path, t in zip(files, times):
     side = np.where(lower, 1.0, -1.0)
     dx = 1.0 / np.sqrt(len(z))  # the channel's 1 m x 1 m lattice
     rows = np.floor(zw / dx).astype(int)
-    out = np.zeros((rows.max() + 1, 9))
-    for r in range(len(out)):
-        for half in (True, False):
+    nrows = int(round(h / dx))  # rows of the half-width, the same in every snapshot
+    rows = np.minimum(rows, nrows - 1)
+    out = np.zeros((nrows, 9))
+    for r in range(nrows):
+        cols = []
+        for half in (True, False):  # each half's row mean, then their mean weighted by count
             m = (rows == r) & (lower == half)
             if not m.any():
                 continue
             s = side[m]
             up, vp = u[m, 0] - u[m, 0].mean(), (u[m, 1] - u[m, 1].mean()) * s
             ek = eps[m] / np.maximum(k[m], 1e-300)
-            out[r] += 0.5 * np.array([zw[m].mean(), u[m, 0].mean(), (up * up).mean(), (vp * vp).mean(), (up * vp).mean(),
-                                      k[m].mean(), nu_t[m].mean(), (-0.5 * C1 * ek * (u[m, 0] - um[m, 0])).mean(),
-                                      ((u[m, 1] - um[m, 1]) * s).mean()])
+            cols.append((m.sum(), np.array([zw[m].mean(), u[m, 0].mean(), (up * up).mean(), (vp * vp).mean(), (up * vp).mean(),
+                                            k[m].mean(), nu_t[m].mean(), (-0.5 * C1 * ek * (u[m, 0] - um[m, 0])).mean(),
+                                            ((u[m, 1] - um[m, 1]) * s).mean()])))
+        if cols:
+            out[r] = sum(c * v for c, v in cols) / sum(c for c, _ in cols)
     acc = out if acc is None else acc + out
     used += 1
-if not used:
-    sys.exit(f"langevin_channel_stresses.py: no snapshot of {run} at t >= {t_from}")
 acc /= used
 z, U, R11, R22, R12, K, NT, relax, vz = acc.T
 S = np.gradient(U, z)
@@ -66,7 +69,7 @@ drift = relax + C2 * S * vz
 dz = dx
 drift_stress = -np.cumsum(drift[::-1])[::-1] * dz  # at each row's lower face
 print(f"{run}: {used} snapshots from t = {t_from} s, rows {dz:.4f} m deep (needed: F (h - z); drift: the drift's stress at the row's lower face)")
-print(f"{'z':>7} {'U':>6} {'R11/k':>6} {'R22/k':>6} {'-R12':>8} {'needed':>8} {'nuT dU/dz':>9} {'-R12/needed':>11} {'drift':>8}")
+print(f"{'z':>7} {'U':>6} {'R11/k':>6} {'R22/k':>6} {'-R12':>8} {'needed':>8} {'nuT dU/dz':>9} {'-R12/needed':>11} {'drift':>8}")  # drift: the stress the drift's net force carries
 for i in range(len(z)):
     need = F * (h - z[i])
     print(f"{z[i]:7.4f} {U[i]:6.3f} {R11[i] / K[i]:6.3f} {R22[i] / K[i]:6.3f} {-R12[i]:8.5f} {need:8.5f} {NT[i] * S[i]:9.5f} "

@@ -48,7 +48,6 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, std::i
     f.attribute("open_state", h.open.state);
     names.push_back("open_role");
   }
-  // k-epsilon's transported state (solver/CheckpointFields.hpp), where the run has it
   // k-epsilon's transported state and the Langevin model's path-averaged gradient
   // (solver/CheckpointFields.hpp), where the run has them
   for (const std::string& name : optional_checkpoint_fields())

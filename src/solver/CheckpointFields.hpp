@@ -4,8 +4,8 @@
 
 namespace ondine {
 
-// f(tag) for each field a checkpoint carries: the state, the open boundaries' roles and
-// k-epsilon's k and epsilon where allocated, and with refinement zones the APR fields (level, role, mother flag and
+// f(tag) for each field a checkpoint carries: the state, the open boundaries' roles,
+// k-epsilon's k and epsilon and the Langevin model's path-averaged gradient where allocated, and with refinement zones the APR fields (level, role, mother flag and
 // mother's id of each particle)
 template <int D, class F>
 void for_each_checkpoint_field(const ParticleSet<D>& p, bool refinement, F&& f) {
