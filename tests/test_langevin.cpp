@@ -100,7 +100,8 @@ struct ShearStep {
   Kokkos::View<double*, Kokkos::HostSpace> k, eps, nu_T;
 };
 
-ShearStep shear_step(double a, double L) {
+// the block's case with a constant mixing length L and the keys of turbulence.langevin
+Scene sheared_block(double L, const std::string& langevin) {
   const std::string y = R"(dimension: 2
 domain: {min: [-0.2, -0.2], max: [1.2, 0.7]}
 fluid: {rho0: 1000, sound_speed: 10, viscosity: 1.0e-6}
@@ -108,15 +109,24 @@ discretisation: {dx: 0.025}
 fluid_blocks: [{min: [0, 0], max: [1, 0.5]}]
 scheme: {viscous_term: morris}
 time: {duration: 1, output_interval: 1}
-turbulence: {model: langevin, mixing_length: {length: )" + std::to_string(L) + "}, langevin: {seed: 3}}\n";
-  Simulation<2> sim(parse_case(y, "langevin.yaml"));
-  auto& p = sim.particles();
+turbulence: {model: langevin, mixing_length: {length: )" + std::to_string(L) + "}, langevin: {" + langevin + "}}\n";
+  return parse_case(y, "langevin.yaml");
+}
+
+// u = (a y, 0) on every particle
+void set_shear(ParticleSet<2>& p, double a) {
   const auto x = p.get(field::Position{});
   const auto u = p.get(field::Velocity{});
   Kokkos::parallel_for(static_cast<int>(p.size()), KOKKOS_LAMBDA(int i) {
     u(i, 0) = a * x(i, 1);
     u(i, 1) = 0.0;
   });
+}
+
+ShearStep shear_step(double a, double L) {
+  Simulation<2> sim(sheared_block(L, "seed: 3"));
+  auto& p = sim.particles();
+  set_shear(p, a);
   ShearStep s;
   s.dt = sim.step(1.0);  // the step may reorder the particles: the views are taken again
   s.x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Position{}));
@@ -182,25 +192,9 @@ TEST_CASE("Langevin: the path average's weight: the step's gradient at t = 0, th
 
 TEST_CASE("Langevin: with mean_gradient: averaged the first step reads the step's gradient, then the path average", "[turbulence]") {
   const double a = 3.0;
-  const std::string y = R"(dimension: 2
-domain: {min: [-0.2, -0.2], max: [1.2, 0.7]}
-fluid: {rho0: 1000, sound_speed: 10, viscosity: 1.0e-6}
-discretisation: {dx: 0.025}
-fluid_blocks: [{min: [0, 0], max: [1, 0.5]}]
-scheme: {viscous_term: morris}
-time: {duration: 1, output_interval: 1}
-turbulence: {model: langevin, mixing_length: {length: 0.05}, langevin: {seed: 3, mean_gradient: averaged}}
-)";
-  Simulation<2> sim(parse_case(y, "langevin.yaml"));
+  Simulation<2> sim(sheared_block(0.05, "seed: 3, mean_gradient: averaged"));
   auto& p = sim.particles();
-  {
-    const auto x = p.get(field::Position{});
-    const auto u = p.get(field::Velocity{});
-    Kokkos::parallel_for(static_cast<int>(p.size()), KOKKOS_LAMBDA(int i) {
-      u(i, 0) = a * x(i, 1);
-      u(i, 1) = 0.0;
-    });
-  }
+  set_shear(p, a);
   const double R = 0.125, dt1 = sim.step(1.0);
   // over the interior: the mean of gbar_xy / a, and the largest difference of gbar / a from
   // ((0, expect_xy), (0, 0))
