@@ -13,6 +13,7 @@
 #include "kernels/turbulence/KEpsilon.hpp"
 #include "kernels/turbulence/Langevin.hpp"
 #include "kernels/apr/RefinementZones.hpp"
+#include "kernels/wall/WallShear.hpp"
 
 namespace ondine {
 
@@ -86,6 +87,7 @@ struct PassContext {
   bool velocity_muscl = false;     // scheme.wall_velocity_reconstruction: the MUSCL state of u (4.30)
   bool wall_state_only = false;    // wall tractions: the MUSCL state's pressure alone, no rho c u_n (wall sensors)
   bool wall_contact = false;       // scheme.wall_contact: u_n of the wall's acoustic terms times theta_q (kernels/wall/WallContact.hpp)
+  WallShear wall_shear = WallShear::Molecular;  // the no-slip wall term's shear stress, as the wall flux applies it
   // refinement zones (observers read each SPH particle with its level's radius)
   RefinementZones<D> zones;
   field_view_t<field::AprBirthLevel, D> birth;

@@ -6,6 +6,9 @@
 // the NFM Laplacian's wall term (4.85), each Shepard-interpolated (2.40-2.41) at
 // every wall quadrature point q from the particles around it, then integrated:
 //   F_w = sum_{q in w} s_q [ <P_p>_q n_out + rho0 nu <(u_i - u_q) / |d_n|>_q ].
+// With a turbulence model the shear is the one the wall term applies (WallShear): nu + nu_T,i
+// in place of nu, or with the log-law wall function rho0 <u_*,i^2 t_i>_q, t_i the direction of
+// the tangential slip (kernels/wall/WallFunction.hpp).
 // With state_only (the wall sensors) P_p is replaced by the MUSCL state's pressure
 // P_f = P_i + c_i^2 (rho_f - rho_i) of (4.30)-(4.32): (4.14) with u_n = 0.
 // (The reaction of the particles' wall terms is not used: with the 1/gamma_i
@@ -20,6 +23,7 @@
 #include "kernels/WallSet.hpp"
 #include "kernels/WallVelocityState.hpp"
 #include "kernels/apr/RefinementZones.hpp"
+#include "kernels/wall/WallShear.hpp"
 
 namespace ondine {
 
@@ -47,6 +51,9 @@ struct WallTraction {
   bool state_only = false;  // the MUSCL state's pressure P_f alone, without (4.14)'s rho c u_n (wall sensors)
   VelocityGradientRows<D> grad_u = {};  // <grad u>_i of the velocity's MUSCL state (velocity_muscl only)
   Kokkos::View<double*, MemSpace> contact = {};  // scheme.wall_contact: theta_q, as the wall flux reads it; empty: 1
+  WallShear shear = WallShear::Molecular;
+  field_view_t<field::EddyViscosity, D> nu_T = {};       // WallShear::Eddy
+  field_view_t<field::FrictionVelocity, D> u_star = {};  // WallShear::LogLaw
 
   KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
     const Vec<D> xq = load<D>(wall.x, q), n = load<D>(wall.n_out, q), uq = load<D>(wall.u, q);
@@ -71,13 +78,21 @@ struct WallTraction {
                                    : dot(ui - uq, n);
       if (contact.extent(0) > 0) un *= contact(q);
       sp += w * normal_flux_pressure<D>(rho_i, P(i), c2_i, kmath::sqrt(c2_i), load<D>(grad_rho, i), xiq, un);
-      sv += (-w / fluid_side_dn<D>(xiq, n, dn_min)) * (ui - uq);
+      if (shear == WallShear::LogLaw) {  // kinematic: u_*^2 along the slip
+        const Vec<D> rel = ui - uq, ut = rel - dot(rel, n) * n;
+        const double mag = kmath::sqrt(norm2(ut)), us = u_star(i);
+        if (mag > 0.0) sv += (w * us * us / mag) * ut;
+      } else {  // kinematic over nu, or (nu + nu_T) / nu
+        const double f = shear == WallShear::Eddy ? 1.0 + nu_T(i) / nu : 1.0;
+        sv += (-w * f / fluid_side_dn<D>(xiq, n, dn_min)) * (ui - uq);
+      }
       sw += w;
     });
     const double s = wall.s(q);
     for (int k = 0; k < D; ++k) {
       traction(q, k) = sw > 0 ? s * sp / sw * n[k] : 0.0;
-      traction(q, D + k) = (sw > 0 && wall.no_slip(q)) ? s * rho0 * nu * sv[k] / sw : 0.0;
+      const double tau = shear == WallShear::LogLaw ? s * rho0 * sv[k] / sw : s * rho0 * nu * sv[k] / sw;
+      traction(q, D + k) = (sw > 0 && wall.no_slip(q)) ? tau : 0.0;
     }
   }
 };

@@ -9,6 +9,7 @@
 #include "kernels/SmoothingKernels.hpp"
 #include "kernels/turbulence/KEpsilon.hpp"
 #include "kernels/turbulence/LogLaw.hpp"
+#include "solver/Measures.hpp"
 #include "test_helpers.hpp"
 
 using namespace ondine;
@@ -76,6 +77,37 @@ scheme: )" + scheme + "\ntime: {duration: 1, output_interval: 1}\n" + extra;
   return std::make_pair(Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Acceleration{})),
                         p.has(field::YPlus{}) ? Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::YPlus{}))
                                               : Kokkos::View<double*, Kokkos::HostSpace>());
+}
+
+// The floor's viscous x-force by brute force over the code's own wall points: at each point q the
+// Shepard mean sum_i w_i f_i W_iq / sum_i w_i W_iq of the particles' kinematic wall shear f_i
+// (x periodic over `period`), times s_q and rho0
+template <class Shear>
+double floor_shear_by_hand(Simulation<2>& sim, double period, Shear&& f_i) {
+  const auto& pts = sim.walls().points();
+  auto xq = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), pts.x);
+  auto sq = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), pts.s);
+  auto& p = sim.particles();
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Position{}));
+  auto m = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Mass{}));
+  auto rho = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Density{}));
+  const Scene& scene = sim.scene();
+  const WendlandC2<2> W(scene.R_over_dx * scene.dx);
+  double F = 0;
+  for (int q = 0; q < pts.count; ++q) {
+    double sw = 0, sf = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      double ddx = x(i, 0) - xq(q, 0);
+      ddx -= period * std::round(ddx / period);
+      const double r = std::hypot(ddx, x(i, 1) - xq(q, 1));
+      if (r >= W.R) continue;
+      const double w = m(i) / rho(i) * W.value(r);
+      sw += w;
+      sf += w * f_i(i, x(i, 1) - xq(q, 1));
+    }
+    if (sw > 0) F += sq(q) * sf / sw;
+  }
+  return scene.rho0 * F;
 }
 
 }  // namespace
@@ -173,6 +205,65 @@ TEST_CASE("Wall function: in the viscous sublayer it gives the laminar no-slip w
   CHECK(ymax < 11.0);    // all in the sublayer
   CHECK(scale > 1e-3);   // the wall term acts
   CHECK(worst < 1e-9 * scale);
+}
+
+TEST_CASE("Wall function: the wall's viscous force is the law's rho0 <u_*^2>, with an eddy viscosity rho0 <(nu + nu_T) u / y>", "[turbulence]") {
+  // a plug flow of 1 m/s over a periodic no-slip floor, nu = 1e-6 (y+ of the rows within R: 1e3 to
+  // 1e4, the log layer): the walls' traction (walls.csv, kernels/WallForces.hpp) reports the wall
+  // shear that the wall function applies, rho0 u_*^2 interpolated at each wall point, checked
+  // against the same interpolation by hand over the code's wall points; the molecular
+  // rho0 nu u / y is 27 times smaller here
+  const std::string y = R"(dimension: 2
+domain: {min: [0, -0.1], max: [0.4, 0.4], periodic: [true, false]}
+fluid: {rho0: 1000, sound_speed: 10, viscosity: 1.0e-6}
+discretisation: {dx: 0.02}
+walls:
+- {name: floor, points: [[0.0, 0.0], [0.4, 0.0]], fluid_side: left, condition: no_slip}
+fluid_blocks: [{min: [0, 0], max: [0.4, 0.2], velocity: [1.0, 0.0]}]
+scheme: {viscous_term: morris, delta_sph: 0.1}
+time: {duration: 1, output_interval: 1}
+)";
+  {
+    Simulation<2> sim(parse_case(y + "turbulence: {model: mixing_length, mixing_length: {length: 1.0e-9}, wall_function: smooth}\n", "plug.yaml"));
+    sim.evaluate();
+    auto us = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().get(field::FrictionVelocity{}));
+    const double by_hand = floor_shear_by_hand(sim, 0.4, [&](std::size_t i, double) { return us(i) * us(i); });
+    const double molecular = floor_shear_by_hand(sim, 0.4, [&](std::size_t, double dy) { return 1.0e-6 * 1.0 / std::max(dy, 0.05 * 0.06); });
+    const auto f = wall_forces(sim);
+    REQUIRE(f.size() == 1);
+    INFO("reported " << f[0].viscous[0] << " N/m, by hand " << by_hand << ", molecular " << molecular);
+    CHECK(by_hand > 20 * molecular);
+    CHECK(std::abs(f[0].viscous[0] - by_hand) < 1e-10 * by_hand);
+    CHECK(std::abs(f[0].viscous[1]) < 1e-10 * by_hand);
+    // the law itself (1 m/s = u_* (ln(y u_*/nu)/0.41 + 5.2)): u_* = 0.0492 m/s at the first row,
+    // y = dx/2, and 0.0419 at the third, y = 2.5 dx; the interpolated stress lies between
+    CHECK(f[0].viscous[0] > 1000 * 0.4 * 0.0419 * 0.0419);
+    CHECK(f[0].viscous[0] < 1000 * 0.4 * 0.0492 * 0.0492);
+  }
+  {
+    // the mixing length without a wall function over the shear layer u = 0.25 y: the wall term
+    // (4.85) carries nu + nu_T,i, and so does the reported force
+    Simulation<2> sim(parse_case(y + "turbulence: {model: mixing_length, mixing_length: {length: 0.01}}\n", "layer.yaml"));
+    auto& p = sim.particles();
+    const auto x = p.get(field::Position{});
+    const auto u = p.get(field::Velocity{});
+    Kokkos::parallel_for(static_cast<int>(p.size()), KOKKOS_LAMBDA(int i) {
+      u(i, 0) = 0.25 * x(i, 1);
+      u(i, 1) = 0.0;
+    });
+    sim.evaluate();
+    auto nt = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::EddyViscosity{}));
+    auto hx = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), x);
+    const auto tau = [&](std::size_t i, double dy, bool eddy) {
+      return ((eddy ? nt(i) : 0.0) + 1.0e-6) * 0.25 * hx(i, 1) / std::max(dy, 0.05 * 0.06);
+    };
+    const double by_hand = floor_shear_by_hand(sim, 0.4, [&](std::size_t i, double dy) { return tau(i, dy, true); });
+    const double molecular = floor_shear_by_hand(sim, 0.4, [&](std::size_t i, double dy) { return tau(i, dy, false); });
+    const auto f = wall_forces(sim);
+    INFO("reported " << f[0].viscous[0] << " N/m, by hand " << by_hand << ", molecular " << molecular);
+    CHECK(by_hand > 10 * molecular);
+    CHECK(std::abs(f[0].viscous[0] - by_hand) < 1e-10 * by_hand);
+  }
 }
 
 TEST_CASE("Turbulence: the case file refuses what is not built, naming the key", "[unit][turbulence][case]") {

@@ -208,11 +208,17 @@ void wall_traction(const PassContext<D>& c, const Kokkos::View<double**, Kokkos:
                                   c.rho, c.P, c.m, c.grad_rho, traction, c.zones, c.birth, c.guard, c.velocity_muscl, c2,
                                   c.wall_state_only, c.grad_u};
     pass.contact = contact;
+    pass.shear = c.wall_shear;
+    pass.nu_T = c.nu_T;
+    pass.u_star = c.u_star;
     Kokkos::parallel_for("ondine::NFM::wall_traction", policy, pass);
   } else {
     WallTraction<D, K> pass{c.wall, c.cells, K(c.R), c.R * c.R, c.nu, c.rho0, 0.05 * c.R, c.box, c.x, c.u, c.rho,
                             c.P, c.m, c.grad_rho, traction, {}, {}, {}, c.velocity_muscl, c2, c.wall_state_only, c.grad_u};
     pass.contact = contact;
+    pass.shear = c.wall_shear;
+    pass.nu_T = c.nu_T;
+    pass.u_star = c.u_star;
     Kokkos::parallel_for("ondine::NFM::wall_traction", policy, pass);
   }
 }

@@ -117,6 +117,9 @@ PassContext<D> Simulation<D>::context(const LevelSpan<D>& L) const {
   c.clearance = 0.5 * L.dx;
   c.velocity_muscl = scene_.wall_velocity_reconstruction;
   c.wall_contact = scene_.wall_contact;
+  c.wall_shear = scene_.turbulence.wall_function != WallLaw::None ? WallShear::LogLaw
+                 : scene_.turbulence.eddy_viscous()                ? WallShear::Eddy
+                                                                  : WallShear::Molecular;
   if (refinement_) {
     c.zones = refinement_->apr().zones();
     take(c.birth, field::AprBirthLevel{});
