@@ -63,4 +63,21 @@ struct AprStateHash {
   }
 };
 
+// The same over the rows of the fields a checkpoint carries beyond the state (the open
+// boundaries' roles, k and epsilon, the Langevin model's path-averaged gradient), each packed as
+// doubles (rows(e, col .. col + width)): per particle a mix of its id, the field's salt and the
+// bits of each value.
+template <int D>
+struct FieldRowsHash {
+  using value_type = unsigned long long;
+  Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> rows;
+  field_view_t<field::GlobalId, D> id;
+  std::uint64_t salt;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, value_type& h) const {
+    std::uint64_t a = mix64(static_cast<std::uint64_t>(id(i)) ^ salt);
+    for (int k = 0; k < static_cast<int>(rows.extent(1)); ++k) a = mix64(a ^ bits_of(rows(i, k)));
+    h += a;
+  }
+};
+
 }  // namespace ondine

@@ -20,6 +20,7 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, std::i
   f.attribute("initial_momentum_y", h.initial_momentum[1]);
   f.attribute("initial_momentum_z", h.initial_momentum[2]);
   f.attribute("checksum", h.checksum);
+  if (h.fields_checksum != 0) f.attribute("fields_checksum", h.fields_checksum);
   f.attribute("wall_corrections", h.wall_corrections);
   f.attribute("run_wall_seconds", h.run_wall_seconds);
   f.attribute("run_cpu_seconds", h.run_cpu_seconds);
@@ -86,6 +87,7 @@ CheckpointSlice read_checkpoint(const std::string& path, const Communicator& com
     h.run_wall_seconds = r.has("run_wall_seconds") ? r.attribute_double("run_wall_seconds") : 0;
     h.run_cpu_seconds = r.has("run_cpu_seconds") ? r.attribute_double("run_cpu_seconds") : 0;
     h.initial_particles = r.has("initial_particles") ? r.attribute_int("initial_particles") : 0;
+    h.fields_checksum = r.has("fields_checksum") ? r.attribute_u64("fields_checksum") : 0;
     std::vector<std::string> names = checkpoint_fields();
     if (r.has("refinement_zones")) {
       // written by a run with refinement zones: its APR state and fields (all of them)

@@ -6,6 +6,7 @@
 
 #include "observers/DiagnosticsSeries.hpp"
 #include "observers/ForceCoefficients.hpp"
+#include "observers/LangevinMomentumSeries.hpp"
 #include "observers/OpenMassBalance.hpp"
 #include "observers/ProbeSeries.hpp"
 #include "observers/ReferenceFigures.hpp"
@@ -27,6 +28,7 @@ std::vector<std::unique_ptr<Observer<D>>> make_observers(const Scene& s, const s
   if (ref == ReferenceKind::MartinMoyce) list.push_back(std::make_unique<SurgeFront<D>>(s, out, writer));
   list.push_back(std::make_unique<DiagnosticsSeries<D>>(s, out, writer));
   if (sim.template find_hook<OpenBoundaryStep<D>>()) list.push_back(std::make_unique<OpenMassBalance<D>>(out, writer, sim));
+  if (s.turbulence.model == TurbulenceModel::Langevin) list.push_back(std::make_unique<LangevinMomentumSeries<D>>(out, writer, sim));
   if (!s.probes.empty()) list.push_back(std::make_unique<ProbeSeries<D>>(s, out, writer));
   if (!s.wall_sensors.empty()) list.push_back(std::make_unique<WallSensorSeries<D>>(s, out, writer));
   if (!s.wave_gauges.empty()) list.push_back(std::make_unique<WaveGaugeSeries<D>>(s, out, writer));

@@ -64,6 +64,7 @@ class Checkpointer {
     h.initial_mass = d0.mass;
     for (int k = 0; k < 3; ++k) h.initial_momentum[k] = d0.momentum[k];
     h.checksum = state_checksum(sim);
+    h.fields_checksum = fields_checksum(sim);
     h.run_wall_seconds = comm_.max(cost.first);
     h.run_cpu_seconds = cost.second;
     h.initial_particles = static_cast<std::int64_t>(initial_particles);
@@ -115,6 +116,15 @@ Simulation<D> start_simulation(const Scene& scene, const RunOptions& opt, const 
   if (restart && sim.refinement_on() && refinement_checksum(sim) != restart->header.refinement.checksum)
     throw CheckpointError(opt.restart + ": the APR fields (birth_level, level, guard, mother, parent_id) do not match the checksum "
                           "stored with them (refinement_checksum): the file is corrupted");
+  if (restart && restart->header.fields_checksum != 0) {
+    std::vector<std::string> names;
+    if (fields_checksum(sim, &names) != restart->header.fields_checksum) {
+      std::string list;
+      for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+      throw CheckpointError(opt.restart + ": the fields " + list +
+                            " do not match the checksum stored with them (fields_checksum): the file is corrupted");
+    }
+  }
   return sim;
 }
 

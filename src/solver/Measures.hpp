@@ -94,5 +94,9 @@ template <int D>
 CheckpointRefinement refinement_state(const Simulation<D>& sim);
 template <int D>
 std::uint64_t refinement_checksum(const Simulation<D>& sim);
+// the checksum of the other fields a checkpoint carries (open roles, k, epsilon, the Langevin
+// model's averaged gradient); 0 when the run has none; `names` gets their labels
+template <int D>
+std::uint64_t fields_checksum(const Simulation<D>& sim, std::vector<std::string>* names = nullptr);
 
 }  // namespace ondine

@@ -11,6 +11,10 @@
 // diagonal implicit), split from the Runge-Kutta step of the flow. The Langevin model moves the
 // owned particles' velocities at each step's end by its increment over the step
 // (kernels/turbulence/Langevin.hpp), split likewise; <u>, nu_T, k and epsilon are its by-products.
+// The increments' momentum, sum_i m_i (u_1 - u)_i, is summed over the steps since the run's
+// start (or restart) for the momentum budget (observers/LangevinMomentumSeries.hpp).
+#include <array>
+
 #include "kernels/turbulence/KEpsilon.hpp"
 #include "solver/StepState.hpp"
 #include "solver/StepHook.hpp"
@@ -103,6 +107,13 @@ class EddyViscosity final : public StepHook<D> {
     auto u1 = p.get(field::LangevinVelocity{});
     auto mean = p.get(field::MeanVelocity{});
     auto corrected = p.get(field::LangevinOffset{});
+    auto m = p.get(field::Mass{});
+    for (int a = 0; a < D; ++a) {
+      double dp = 0;
+      Kokkos::parallel_reduce("ondine::Langevin::momentum", Kokkos::RangePolicy<ExecSpace>(0, s.owned()),
+                              KOKKOS_LAMBDA(const int i, double& sum) { sum += m(i) * (u1(i, a) - u(i, a)); }, dp);
+      impulse_[a] += dp;
+    }
     Kokkos::parallel_for("ondine::Langevin::update", Kokkos::RangePolicy<ExecSpace>(0, s.owned()), KOKKOS_LAMBDA(const int i) {
       for (int a = 0; a < D; ++a) {
         u(i, a) = u1(i, a);
@@ -112,8 +123,18 @@ class EddyViscosity final : public StepHook<D> {
     s.domain().halos_stale();
   }
 
+  bool langevin() const { return langevin_; }
+  // the Langevin increments' momentum since the run's start or restart (kg m/s; per metre of
+  // span in 2D), all ranks
+  std::vector<double> langevin_impulse(const Communicator& comm) const {
+    std::vector<double> v(impulse_.begin(), impulse_.begin() + D);
+    comm.sum_in_place(v);
+    return v;
+  }
+
  private:
   bool k_eps_, langevin_, averaged_;
+  std::array<double, 3> impulse_ = {0, 0, 0};  // this rank's
 };
 
 }  // namespace ondine

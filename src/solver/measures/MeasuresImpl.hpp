@@ -22,4 +22,5 @@
   template StateRows state_rows<D>(const Simulation<D>&);                                      \
   template std::uint64_t state_checksum<D>(const Simulation<D>&);                              \
   template CheckpointRefinement refinement_state<D>(const Simulation<D>&);                     \
-  template std::uint64_t refinement_checksum<D>(const Simulation<D>&);
+  template std::uint64_t refinement_checksum<D>(const Simulation<D>&);                         \
+  template std::uint64_t fields_checksum<D>(const Simulation<D>&, std::vector<std::string>*);

@@ -1,5 +1,7 @@
 #pragma once
 // A checkpoint's rows and the state checksums (solver/Measures.hpp).
+#include <algorithm>
+
 #include "kernels/StateHash.hpp"
 #include "solver/CheckpointFields.hpp"
 #include "solver/Simulation.hpp"
@@ -63,6 +65,41 @@ std::uint64_t state_checksum(const Simulation<D>& sim) {
                                        p.get(field::Mass{}), p.get(field::GlobalId{})},
                           h);
   return sim.comm().sum_u64(static_cast<std::uint64_t>(h));
+}
+
+// the checksum of the fields a checkpoint carries beyond the state and the APR fields (each has
+// its own); 0 when there are none. `names`, when given, gets their labels.
+template <int D>
+std::uint64_t fields_checksum(const Simulation<D>& sim, std::vector<std::string>* names) {
+  const ParticleSet<D>& p = sim.particles();
+  const int n_own = static_cast<int>(sim.size());
+  Kokkos::View<int*, MemSpace> index("ondine::Checkpoint::index", n_own);
+  Kokkos::parallel_for("ondine::Checkpoint::index", Kokkos::RangePolicy<ExecSpace>(0, n_own), Iota32{index});
+  const std::vector<std::string>& base = checkpoint_fields();
+  const std::vector<std::string>& apr = checkpoint_refinement_fields();
+  bool any = false;
+  unsigned long long h = 0;
+  auto take = [&](auto tag) {
+    using Tag = decltype(tag);
+    const std::string label = Tag::label;
+    if (std::find(base.begin(), base.end(), label) != base.end() || std::find(apr.begin(), apr.end(), label) != apr.end()) return;
+    any = true;
+    if (names) names->push_back(label);
+    using V = field_view_t<Tag, D>;
+    exchange::Rows dev("ondine::Checkpoint::rows", n_own, exchange::width_of<V>());
+    Kokkos::parallel_for("ondine::Checkpoint::pack", Kokkos::RangePolicy<ExecSpace>(0, n_own),
+                         exchange::PackRows<V, D>{p.get(tag), index, Kokkos::View<int*, MemSpace>(), dev, 0, {}});
+    std::uint64_t salt = 0xcbf29ce484222325ULL;  // FNV-1a of the label
+    for (const char ch : label) salt = (salt ^ static_cast<unsigned char>(ch)) * 0x100000001b3ULL;
+    unsigned long long f = 0;
+    Kokkos::parallel_reduce("ondine::FieldRowsHash", Kokkos::RangePolicy<ExecSpace>(0, n_own),
+                            FieldRowsHash<D>{dev, p.get(field::GlobalId{}), salt}, f);
+    h += f;
+  };
+  for_each_checkpoint_field(p, sim.refinement_on(), take);
+  if (!any) return 0;
+  const std::uint64_t all = sim.comm().sum_u64(static_cast<std::uint64_t>(h));
+  return all == 0 ? 1 : all;  // 0 stands for none
 }
 
 }  // namespace ondine
