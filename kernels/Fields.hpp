@@ -64,6 +64,8 @@ ONDINE_FIELD_(DissipationRateNext, "epsilon_next", double, false, false);
 ONDINE_FIELD(MeanVelocity, "mean_velocity", double, true);
 ONDINE_FIELD_(LangevinVelocity, "langevin_velocity", double, true, false);
 ONDINE_FIELD_(LangevinOffset, "langevin_offset", double, true, false);
+// turbulence.langevin.drift_mean: removed: the step's deterministic increment (scratch)
+ONDINE_FIELD_(LangevinDrift, "langevin_drift", double, true, false);
 // turbulence.langevin.mean_gradient: averaged: the gradient of the means averaged along the
 // particle's path over the model's turnover time k / epsilon, one row per field (a state field:
 // in checkpoints)

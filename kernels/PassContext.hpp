@@ -81,6 +81,7 @@ struct PassContext {
   field_view_t<field::MeanVelocity, D> mean_u;       // <u> and the velocity after the step's increment
   field_view_t<field::LangevinVelocity, D> u_langevin;
   field_view_t<field::LangevinOffset, D> langevin_offset;
+  field_view_t<field::LangevinDrift, D> langevin_drift;
   LangevinGradientRows<D> langevin_gradient;         // its path-averaged gradient (mean_gradient: averaged)
   LangevinConstants langevin;
   double clearance = 0;            // dx / 2 of the level: the wall-ward correction acts closer than this

@@ -2,10 +2,14 @@
 // the consistency of C0 with the energy budget, its pass on a sheared block, and the case file.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
+#include "kernels/SmoothingKernels.hpp"
 #include "kernels/turbulence/Langevin.hpp"
+#include "solver/Measures.hpp"
+#include "solver/hooks/EddyViscosity.hpp"
 #include "test_helpers.hpp"
 
 using namespace ondine;
@@ -249,6 +253,77 @@ TEST_CASE("Langevin: with mean_gradient: averaged the first step reads the step'
   CHECK(std::abs(eps_ratio / n - 1.0) < 0.06);  // ~ s^3: three times the strain's scatter
 }
 
+TEST_CASE("Langevin: the increments' momentum, as langevin.csv sums it, is the block's momentum change", "[turbulence]") {
+  // a free block in shear, no gravity, no wall: the pair terms conserve momentum, so over five
+  // steps the block's momentum changes by the Langevin increments' alone; the hook's sum of
+  // m (u_1 - u) must equal it to round-off, and be non-zero (the noise and the filtered means)
+  Simulation<2> sim(sheared_block(0.05, "seed: 3"));
+  set_shear(sim.particles(), 1.0);
+  const Diagnostics d0 = diagnostics(sim);
+  for (int n = 0; n < 5; ++n) sim.step(1.0);
+  const Diagnostics d1 = diagnostics(sim);
+  const auto* hook = sim.find_hook<EddyViscosity<2>>();
+  REQUIRE(hook != nullptr);
+  const std::vector<double> impulse = hook->langevin_impulse(sim.comm());
+  const double scale = d0.mass * 0.5;  // M times the block's largest speed, a y at y = 0.5 m
+  for (int k = 0; k < 2; ++k) {
+    INFO("component " << k << ": momentum change " << d1.momentum[k] - d0.momentum[k] << ", increments' sum " << impulse[k]);
+    CHECK(std::abs(impulse[k]) > 1e-6 * scale);
+    CHECK(std::abs(d1.momentum[k] - d0.momentum[k] - impulse[k]) < 1e-12 * scale);
+  }
+}
+
+TEST_CASE("Langevin: drift_mean: removed takes the kernel mean of the step's drift off each increment", "[turbulence]") {
+  // the same disordered sheared block and noise with the drift's mean kept and removed: after
+  // one step the two velocities differ by the Shepard mean of the deterministic increments D
+  // over each support (by hand over all pairs), and the removed run's drift carries less net
+  // momentum than the kept run's
+  const auto run = [](const char* drift_mean) {
+    Simulation<2> sim(sheared_block(0.05, std::string("seed: 3, drift_mean: ") + drift_mean));
+    disorder(sim, 0.2, 0.0, 0.0, 11);
+    set_shear(sim.particles(), 1.0);
+    sim.step(1.0);
+    return sim;
+  };
+  Simulation<2> kept = run("kept"), removed = run("removed");
+  const auto& p = removed.particles();
+  auto id_k = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), kept.particles().get(field::GlobalId{}));
+  auto u_k = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), kept.particles().get(field::Velocity{}));
+  auto id = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::GlobalId{}));
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Position{}));
+  auto u = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Velocity{}));
+  auto m = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Mass{}));
+  auto rho = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::Density{}));
+  auto D = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.get(field::LangevinDrift{}));
+  const std::size_t n = p.size();
+  REQUIRE(kept.particles().size() == n);
+  std::vector<std::size_t> at(n);  // kept's row of each id
+  for (std::size_t i = 0; i < n; ++i) at[static_cast<std::size_t>(id_k(i))] = i;
+  const WendlandC2<2> W(removed.scene().R_over_dx * removed.scene().dx);
+  double worst = 0, scale = 0, drift_kept = 0, drift_removed = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    double sw = 0, s0 = 0, s1 = 0;
+    for (std::size_t j = 0; j < n; ++j) {
+      const double r = std::hypot(x(i, 0) - x(j, 0), x(i, 1) - x(j, 1));
+      if (r >= W.R) continue;
+      const double w = m(j) / rho(j) * W.value(r);
+      sw += w;
+      s0 += w * D(j, 0);
+      s1 += w * D(j, 1);
+    }
+    const std::size_t k = at[static_cast<std::size_t>(id(i))];
+    worst = std::max({worst, std::abs(u(i, 0) - u_k(k, 0) + s0 / sw), std::abs(u(i, 1) - u_k(k, 1) + s1 / sw)});
+    scale = std::max({scale, std::abs(D(i, 0)), std::abs(D(i, 1))});
+    drift_kept += m(i) * D(i, 0);
+    drift_removed += m(i) * (D(i, 0) - s0 / sw);
+  }
+  INFO("largest drift " << scale << " m/s, worst difference " << worst << "; the drift's x-momentum kept " << drift_kept << ", removed "
+                        << drift_removed);
+  CHECK(scale > 1e-6);
+  CHECK(worst < 1e-12 * scale + 1e-15);
+  CHECK(std::abs(drift_removed) < 0.1 * std::abs(drift_kept));  // 1/44 here
+}
+
 TEST_CASE("Langevin: the case file refuses what is not built, naming the key", "[unit][turbulence][case]") {
   const auto with = [](const std::string& turbulence, const std::string& reference = "") {
     return R"(dimension: 2
@@ -274,6 +349,8 @@ turbulence: )" + turbulence + "\n" + reference;
                     Contains("turbulence.langevin.seed"));
   CHECK_THROWS_WITH(parse_case(with("{model: langevin, mixing_length: {length: 0.1}, langevin: {mean_gradient: time}}"), "l.yaml"),
                     Contains("turbulence.langevin.mean_gradient"));
+  CHECK_THROWS_WITH(parse_case(with("{model: langevin, mixing_length: {length: 0.1}, langevin: {drift_mean: zero}}"), "l.yaml"),
+                    Contains("turbulence.langevin.drift_mean"));
   CHECK_THROWS_WITH(
       parse_case(with("{model: langevin, mixing_length: {length: 0.1}}", "reference: {type: hydrostatic, length: 1, plane: true}\n"), "l.yaml"),
       Contains("reference.plane"));

@@ -55,6 +55,7 @@ struct LangevinConstants {
   std::int64_t step = 0;  // the step advanced (set by the hook)
   double dt = 0;
   bool averaged = false;  // turbulence.langevin.mean_gradient: averaged
+  bool drift_mean_removed = false;  // turbulence.langevin.drift_mean: removed
   double time = 0;        // the step's start (set by the hook): the running mean's age
 
   // C0 of Pope's consistency relation with P / epsilon = 1, in d dimensions
@@ -156,6 +157,7 @@ struct LangevinStep {
   field_view_t<field::DissipationRate, D> eps;
   field_view_t<field::LangevinVelocity, D> u_next;
   LangevinGradientRows<D> mean_gradient;            // gbar (c.averaged only): read and advanced
+  field_view_t<field::LangevinDrift, D> drift = {};  // c.drift_mean_removed only: the deterministic increment
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<D> xi = load<D>(x, i), ui = load<D>(u, i), ut = load<D>(mean, i);
@@ -178,6 +180,10 @@ struct LangevinStep {
     Vec<D> noise;
     for (int a = 0; a < D; ++a) noise[a] = langevin_normal(c.seed, id(i), c.step, a);
     const Vec<D> up = langevin_fluctuation<D>(ui - um, g, kmath::sqrt(c.c_mu) * s, e, noise, c);
+    if (c.drift_mean_removed) {  // the increment without its noise: <u> + u'_1(xi = 0) - u
+      const Vec<D> up0 = langevin_fluctuation<D>(ui - um, g, kmath::sqrt(c.c_mu) * s, e, Vec<D>::zero(), c);
+      for (int a = 0; a < D; ++a) drift(i, a) = um[a] + up0[a] - ui[a];
+    }
     nu_T(i) = nt;
     eps(i) = e;
     k(i) = kmath::sqrt(e * nt / c.c_mu);
@@ -185,6 +191,40 @@ struct LangevinStep {
       u_next(i, a) = um[a] + up[a];
       offset(i, a) = um[a];
     }
+  }
+};
+
+// turbulence.langevin.drift_mean: removed: the kernel mean of the step's deterministic
+// increments, Shepard-normalised with the particle itself as the means are, taken from each
+// particle's velocity after the increment:
+//   u_1,i -= sum_j w_j D_j W_ij / sum_j w_j W_ij,   D = <u> + u'_1(xi = 0) - u,
+// so that the drift's mean over a support is zero, as the model's consistency asks of it (the
+// drift moves u' about the mean, the mean velocity's equation has no drift term: Pope 2000
+// §12.3); G read from a particle's own path (mean_gradient: averaged) or from supports cut by
+// a wall otherwise leaves a mean force (langevin.csv).
+template <int D, class Kernel>
+struct LangevinDriftMean {
+  NeighbourList<D> list;
+  PeriodicBox<D> box;
+  Kernel W;
+  double R2;
+  field_view_t<field::Position, D> x;
+  field_view_t<field::Density, D> rho;
+  field_view_t<field::Mass, D> m;
+  field_view_t<field::LangevinDrift, D> drift;  // every particle's, halo copies included
+  field_view_t<field::LangevinVelocity, D> u_next;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    const Vec<D> xi = load<D>(x, i);
+    const double wi = m(i) / rho(i) * W.value(0.0);
+    Vec<D> sum = wi * load<D>(drift, i);
+    double shepard = wi;
+    for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>&, const double r) {
+      const double wW = m(j) / rho(j) * W.value(r);
+      sum = sum + wW * load<D>(drift, j);
+      shepard += wW;
+    });
+    for (int a = 0; a < D; ++a) u_next(i, a) -= sum[a] / shepard;
   }
 };
 

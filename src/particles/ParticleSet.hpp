@@ -25,7 +25,7 @@ class ParticleSet {
                             field::EddyViscosity, field::FrictionVelocity, field::YPlus,
                             field::TurbulentKineticEnergy, field::DissipationRate, field::TurbulentKineticEnergyNext,
                             field::DissipationRateNext, field::MeanVelocity, field::LangevinVelocity,
-                            field::LangevinOffset, field::LangevinGradientX, field::LangevinGradientY, field::LangevinGradientZ,
+                            field::LangevinOffset, field::LangevinDrift, field::LangevinGradientX, field::LangevinGradientY, field::LangevinGradientZ,
                             field::AprLevel, field::AprBirthLevel, field::AprGuard, field::AprMother, field::AprParent,
                             field::StagePosition, field::StageVelocity, field::StageDensity,
                             field::StagePositionSum, field::StageVelocitySum, field::StageDensitySum,

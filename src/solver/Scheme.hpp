@@ -33,6 +33,7 @@ struct CompiledScheme {
   Pass k_epsilon_step = nullptr;            // k-epsilon: k and epsilon over ctx.k_eps.dt into ctx.k_next, ctx.eps_next
   Pass langevin_mean = nullptr;             // Langevin: the kernel-filtered means <u> into ctx.mean_u
   Pass langevin_step = nullptr;             // Langevin: k, epsilon and the velocity after the step's increment
+  Pass langevin_drift_mean = nullptr;       // Langevin, drift_mean: removed: the deterministic increments' kernel mean taken off
   double (*wall_stiffness)(const PassContext<D>&) = nullptr;  // max kappa_i of (4.85), with viscous walls
   // particle shifting (2.107)-(2.111) from ctx's state into (x_out, u_out, rho_out)
   void (*shifting)(const PassContext<D>&, const field_view_t<field::Position, D>&, const field_view_t<field::Velocity, D>&,

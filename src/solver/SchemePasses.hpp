@@ -119,7 +119,14 @@ void langevin_step(const PassContext<D>& c) {
   Kokkos::parallel_for("ondine::Langevin::step", range(c),
                        LangevinStep<D, K>{c.list, c.box, K(c.R), c.R * c.R, c.x, c.u, c.rho, c.m, c.id, c.mixing_length, c.langevin,
                                           c.mean_u, c.langevin_offset, c.nu_T, c.k, c.eps, c.u_langevin,
-                                          c.langevin_gradient});
+                                          c.langevin_gradient, c.langevin_drift});
+}
+
+// ... and with drift_mean: removed the kernel mean of the deterministic increments taken from it
+template <int D, class K>
+void langevin_drift_mean(const PassContext<D>& c) {
+  Kokkos::parallel_for("ondine::Langevin::drift_mean", range(c),
+                       LangevinDriftMean<D, K>{c.list, c.box, K(c.R), c.R * c.R, c.x, c.rho, c.m, c.langevin_drift, c.u_langevin});
 }
 
 // max_i kappa_i of the no-slip wall term (4.85) (kernels/WallFluxPass.hpp)
@@ -257,6 +264,7 @@ CompiledScheme<D> compile(const Scene& s) {
     if (s.turbulence.model == TurbulenceModel::Langevin) {
       c.langevin_mean = &langevin_mean<D, K>;
       c.langevin_step = &langevin_step<D, K>;
+      c.langevin_drift_mean = &langevin_drift_mean<D, K>;
     }
   }
   if (s.ale) c.transport_velocity = walls ? &transport_velocity<D, K, true> : &transport_velocity<D, K, false>;

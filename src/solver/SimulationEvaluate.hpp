@@ -81,6 +81,7 @@ PassContext<D> Simulation<D>::context(const LevelSpan<D>& L) const {
   take(c.mean_u, field::MeanVelocity{});
   take(c.u_langevin, field::LangevinVelocity{});
   take(c.langevin_offset, field::LangevinOffset{});
+  take(c.langevin_drift, field::LangevinDrift{});
   take(c.langevin_gradient.g0, field::LangevinGradientX{});
   take(c.langevin_gradient.g1, field::LangevinGradientY{});
   take(c.langevin_gradient.g2, field::LangevinGradientZ{});
@@ -111,6 +112,7 @@ PassContext<D> Simulation<D>::context(const LevelSpan<D>& L) const {
     c.k_eps = KEpsilonConstants{tu.c_mu, tu.c1, tu.c2, tu.sigma_k, tu.sigma_e, 1e-10 * tu.initial_k, 1e-10 * tu.initial_epsilon};
     c.langevin = LangevinConstants{tu.langevin_c1, tu.langevin_c2, tu.langevin_c0, tu.c_mu, tu.seed};
     c.langevin.averaged = tu.langevin_averaged;
+    c.langevin.drift_mean_removed = tu.langevin_drift_mean_removed;
     c.log_law = LogLaw::make(tu.kappa, scene_.nu, tu.smooth_constant, tu.wall_function == WallLaw::Rough ? tu.roughness : 0.0,
                              tu.rough_constant);
   }

@@ -27,7 +27,8 @@ class EddyViscosity final : public StepHook<D> {
   explicit EddyViscosity(const Scene& s)
       : k_eps_(s.turbulence.model == TurbulenceModel::KEpsilon),
         langevin_(s.turbulence.model == TurbulenceModel::Langevin),
-        averaged_(langevin_ && s.turbulence.langevin_averaged) {}
+        averaged_(langevin_ && s.turbulence.langevin_averaged),
+        drift_mean_removed_(langevin_ && s.turbulence.langevin_drift_mean_removed) {}
   const char* name() const override { return "eddy_viscosity"; }
   void allocate(ParticleSet<D>& p) override {
     p.allocate(field::EddyViscosity{});
@@ -39,6 +40,7 @@ class EddyViscosity final : public StepHook<D> {
       p.allocate(field::MeanVelocity{});
       p.allocate(field::LangevinVelocity{});
       p.allocate(field::LangevinOffset{});
+      if (drift_mean_removed_) p.allocate(field::LangevinDrift{});
     }
     if (averaged_) {  // the path-averaged gradient: a state field (zero until the first step sets it)
       p.allocate(field::LangevinGradientX{});
@@ -103,6 +105,11 @@ class EddyViscosity final : public StepHook<D> {
         c.langevin.time = s.time();
         s.scheme().langevin_step(c);
       }
+    if (drift_mean_removed_) {
+      s.domain().refresh(p, field::LangevinDrift{});
+      for (const LevelSpan<D>& L : s.levels())
+        if (L.active_end > L.first) s.scheme().langevin_drift_mean(s.context(L));
+    }
     auto u = p.get(field::Velocity{});
     auto u1 = p.get(field::LangevinVelocity{});
     auto mean = p.get(field::MeanVelocity{});
@@ -133,7 +140,7 @@ class EddyViscosity final : public StepHook<D> {
   }
 
  private:
-  bool k_eps_, langevin_, averaged_;
+  bool k_eps_, langevin_, averaged_, drift_mean_removed_;
   std::array<double, 3> impulse_ = {0, 0, 0};  // this rank's
 };
 
