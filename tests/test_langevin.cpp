@@ -127,8 +127,8 @@ void set_shear(ParticleSet<2>& p, double a) {
   });
 }
 
-ShearStep shear_step(double a, double L) {
-  Simulation<2> sim(sheared_block(L, "seed: 3"));
+ShearStep shear_step(double a, double L, const std::string& langevin = "seed: 3") {
+  Simulation<2> sim(sheared_block(L, langevin));
   auto& p = sim.particles();
   set_shear(p, a);
   ShearStep s;
@@ -324,6 +324,54 @@ TEST_CASE("Langevin: drift_mean: removed takes the kernel mean of the step's dri
   CHECK(std::abs(drift_removed) < 0.1 * std::abs(drift_kept));  // 1/44 here
 }
 
+TEST_CASE("Langevin: noise: solenoidal gives unit normals without the white noise's divergence", "[turbulence]") {
+  // the sheared block's first step (u' = 0 before it: the increment is its noise alone) with the
+  // white and the solenoidal noise: in the interior each component's variance over the particles
+  // is 1, and the SPH divergence sum_j w_j (xi_j - xi_i).grad_i W_ij of the solenoidal field is a
+  // small part of the white one's
+  const double a = 3.0, L = 0.05, c_mu = 0.09, c0 = 1.4, c1 = 1.8, R = 0.075, edge = 0.125;
+  const auto stats = [&](const std::string& keys) {
+    const ShearStep s = shear_step(a, L, keys);
+    const double nt = L * L * a, e = nt * a * a;
+    const double amp = std::sqrt(c0 * e * s.dt) / (1.0 + s.dt * 0.5 * c1 * std::sqrt(c_mu) * a);
+    const std::size_t n = s.x.extent(0);
+    std::vector<double> xi(2 * n);
+    for (std::size_t i = 0; i < n; ++i)
+      for (int c = 0; c < 2; ++c) xi[2 * i + c] = (s.u(i, c) - s.mean(i, c)) / amp;
+    const WendlandC2<2> W(R);
+    double var = 0, div2 = 0;
+    int m = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (s.x(i, 0) < edge + 0.01 || s.x(i, 0) > 1 - edge - 0.01 || s.x(i, 1) < edge || s.x(i, 1) > 0.5 - edge) continue;
+      double div = 0;
+      for (std::size_t j = 0; j < n; ++j) {
+        const double dx = s.x(i, 0) - s.x(j, 0), dy = s.x(i, 1) - s.x(j, 1), r = std::hypot(dx, dy);
+        if (j == i || r >= R) continue;
+        const double f = 0.025 * 0.025 * W.derivative(r) / r;  // the lattice's volume, grad_i W = W'/r (x_i - x_j)
+        div += f * ((xi[2 * j] - xi[2 * i]) * dx + (xi[2 * j + 1] - xi[2 * i + 1]) * dy);
+      }
+      var += xi[2 * i] * xi[2 * i] + xi[2 * i + 1] * xi[2 * i + 1];
+      div2 += div * div;
+      m += 2;
+    }
+    return std::make_pair(var / m, std::sqrt(div2 / (m / 2)));
+  };
+  // eight seeds: 8 x 600 samples, independent for the white noise (4 standard errors: 0.08)
+  double var_white = 0, div_white = 0, var_sol = 0, div_sol = 0;
+  for (int seed = 1; seed <= 8; ++seed) {
+    const auto w = stats("seed: " + std::to_string(seed));
+    const auto c = stats("seed: " + std::to_string(seed) + ", noise: solenoidal");
+    var_white += w.first / 8;
+    div_white += w.second / 8;
+    var_sol += c.first / 8;
+    div_sol += c.second / 8;
+  }
+  INFO("variance white " << var_white << ", solenoidal " << var_sol << "; rms divergence white " << div_white << ", solenoidal " << div_sol);
+  CHECK(std::abs(var_white - 1.0) < 0.08);
+  CHECK(std::abs(var_sol - 1.0) < 0.08);
+  CHECK(div_sol < 1e-2 * div_white);
+}
+
 TEST_CASE("Langevin: the case file refuses what is not built, naming the key", "[unit][turbulence][case]") {
   const auto with = [](const std::string& turbulence, const std::string& reference = "") {
     return R"(dimension: 2
@@ -351,6 +399,8 @@ turbulence: )" + turbulence + "\n" + reference;
                     Contains("turbulence.langevin.mean_gradient"));
   CHECK_THROWS_WITH(parse_case(with("{model: langevin, mixing_length: {length: 0.1}, langevin: {drift_mean: zero}}"), "l.yaml"),
                     Contains("turbulence.langevin.drift_mean"));
+  CHECK_THROWS_WITH(parse_case(with("{model: langevin, mixing_length: {length: 0.1}, langevin: {noise: red}}"), "l.yaml"),
+                    Contains("turbulence.langevin.noise"));
   CHECK_THROWS_WITH(
       parse_case(with("{model: langevin, mixing_length: {length: 0.1}}", "reference: {type: hydrostatic, length: 1, plane: true}\n"), "l.yaml"),
       Contains("reference.plane"));

@@ -56,6 +56,7 @@ struct LangevinConstants {
   double dt = 0;
   bool averaged = false;  // turbulence.langevin.mean_gradient: averaged
   bool drift_mean_removed = false;  // turbulence.langevin.drift_mean: removed
+  bool solenoidal = false;          // turbulence.langevin.noise: solenoidal
   double time = 0;        // the step's start (set by the hook): the running mean's age
 
   // C0 of Pope's consistency relation with P / epsilon = 1, in d dimensions
@@ -101,6 +102,56 @@ KOKKOS_INLINE_FUNCTION double langevin_average_weight(const double dt, const dou
   const double running = dt / (t + dt), turnover = 1.0 - kmath::exp(-dt * kmath::sqrt(c_mu) * s_bar);
   return running > turnover ? running : turnover;
 }
+
+// turbulence.langevin.noise: solenoidal: the normals xi_i of the increment replaced by the SPH
+// curl of a field psi of independent standard normals on the particles (psi_j a scalar in 2D, a
+// vector in 3D, a function of (seed, id, step) like xi), each component divided by its standard
+// deviation over psi:
+//   c_i = sum_j w_j (psi_j - psi_i) x grad_i W_ij  (2D: (d psi/dy, -d psi/dx)),
+//   xi_i,a = c_i,a / sqrt( sum_j (w_j g_j,a)^2 + (sum_j w_j g_j,a)^2 ),
+// g_j,a the kernel-gradient weights of component a. The increments are then, to the SPH
+// operators' accuracy, divergence-free: the weakly compressible fluid's pressure does not take
+// their compressive half (per particle a unit normal, as the white noise).
+template <int D>
+struct SolenoidalNoise {
+  Vec<D> c = Vec<D>::zero(), var = Vec<D>::zero(), sum = Vec<D>::zero();  // curl, sum (w g)^2, sum w g
+  // psi components of a particle: D == 2 one (index 4), D == 3 three (4, 5, 6)
+  KOKKOS_INLINE_FUNCTION static double psi(std::uint64_t seed, std::int64_t id, std::int64_t step, int k) {
+    return langevin_normal(seed, id, step, 4 + k);
+  }
+  // neighbour j: w_j, grad_i W_ij, psi_j - psi_i for each psi component
+  KOKKOS_INLINE_FUNCTION void add(const double w, const Vec<D>& g, const double (&dpsi)[3]) {
+    if constexpr (D == 2) {
+      const double gx = w * g[1], gy = -w * g[0];  // (d/dy, -d/dx)
+      c[0] += gx * dpsi[0];
+      c[1] += gy * dpsi[0];
+      var[0] += gx * gx;
+      var[1] += gy * gy;
+      sum[0] += gx;
+      sum[1] += gy;
+    } else {
+      for (int a = 0; a < 3; ++a) {  // (curl psi)_a = d_b psi_c - d_c psi_b, (a, b, c) cyclic
+        const int b = (a + 1) % 3, e = (a + 2) % 3;
+        c[a] += w * (g[b] * dpsi[e] - g[e] * dpsi[b]);
+        var[a] += w * w * (g[b] * g[b] + g[e] * g[e]);
+      }
+      for (int a = 0; a < 3; ++a) sum[a] += w * g[a];  // psi_i's own weight: d_b and d_c sums
+    }
+  }
+  KOKKOS_INLINE_FUNCTION Vec<D> normals() const {
+    Vec<D> xi;
+    for (int a = 0; a < D; ++a) {
+      double v = var[a];
+      if constexpr (D == 2) v += sum[a] * sum[a];
+      else {
+        const int b = (a + 1) % 3, e = (a + 2) % 3;
+        v += sum[b] * sum[b] + sum[e] * sum[e];
+      }
+      xi[a] = v > 0 ? c[a] / kmath::sqrt(v) : 0.0;
+    }
+    return xi;
+  }
+};
 
 template <int D>
 using LangevinGradientRows = GradientRows<D, field::LangevinGradientX, field::LangevinGradientY, field::LangevinGradientZ>;
@@ -162,8 +213,18 @@ struct LangevinStep {
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<D> xi = load<D>(x, i), ui = load<D>(u, i), ut = load<D>(mean, i);
     VelocityGradientSum<D> S;
+    SolenoidalNoise<D> curl;
+    double psi_i[3] = {0, 0, 0};
+    if (c.solenoidal)
+      for (int k = 0; k < (D == 2 ? 1 : 3); ++k) psi_i[k] = SolenoidalNoise<D>::psi(c.seed, id(i), c.step, k);
     for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>& xij, const double r) {
-      S.add(m(j) / rho(j), xij, (W.derivative(r) / r) * xij, load<D>(mean, j) - ut);
+      const Vec<D> g = (W.derivative(r) / r) * xij;
+      S.add(m(j) / rho(j), xij, g, load<D>(mean, j) - ut);
+      if (c.solenoidal) {
+        double dpsi[3] = {0, 0, 0};
+        for (int k = 0; k < (D == 2 ? 1 : 3); ++k) dpsi[k] = SolenoidalNoise<D>::psi(c.seed, id(j), c.step, k) - psi_i[k];
+        curl.add(m(j) / rho(j), g, dpsi);
+      }
     });
     const Mat<D> g_step = S.gradient();
     const Vec<D> um = ut + (-1.0) * (g_step * load<D>(offset, i));
@@ -178,7 +239,9 @@ struct LangevinStep {
     const double s = strain_rate_magnitude<D>(g), L = length(xi);
     const double nt = L * L * s, e = nt * s * s;  // nu_T (V&I §4.1.1), epsilon = nu_T s^2
     Vec<D> noise;
-    for (int a = 0; a < D; ++a) noise[a] = langevin_normal(c.seed, id(i), c.step, a);
+    if (c.solenoidal) noise = curl.normals();
+    else
+      for (int a = 0; a < D; ++a) noise[a] = langevin_normal(c.seed, id(i), c.step, a);
     const Vec<D> up = langevin_fluctuation<D>(ui - um, g, kmath::sqrt(c.c_mu) * s, e, noise, c);
     if (c.drift_mean_removed) {  // the increment without its noise: <u> + u'_1(xi = 0) - u
       const Vec<D> up0 = langevin_fluctuation<D>(ui - um, g, kmath::sqrt(c.c_mu) * s, e, Vec<D>::zero(), c);

@@ -47,7 +47,7 @@ void read_turbulence(const Reader& r, YAML::Node& root, Scene& s) {
   }
   if (const YAML::Node g = t["langevin"]) {
     if (m.model != TurbulenceModel::Langevin) r.fail(g, "turbulence.langevin", "is read with turbulence.model: langevin only");
-    r.only_keys(g, "turbulence.langevin", {"c1", "c2", "c0", "seed", "mean_gradient", "drift_mean"});
+    r.only_keys(g, "turbulence.langevin", {"c1", "c2", "c0", "seed", "mean_gradient", "drift_mean", "noise"});
     if (g["c1"]) m.langevin_c1 = r.positive(g["c1"], "turbulence.langevin.c1", " (the drift's return to isotropy)");
     if (g["c2"]) m.langevin_c2 = r.non_negative(g["c2"], "turbulence.langevin.c2", " (the drift's isotropisation of production)");
     if (g["c0"]) m.langevin_c0 = r.positive(g["c0"], "turbulence.langevin.c0", " (the diffusion's constant)");
@@ -55,6 +55,7 @@ void read_turbulence(const Reader& r, YAML::Node& root, Scene& s) {
       m.langevin_averaged = r.word(g["mean_gradient"], "turbulence.langevin.mean_gradient", {"filtered", "averaged"}) == "averaged";
     if (g["drift_mean"])
       m.langevin_drift_mean_removed = r.word(g["drift_mean"], "turbulence.langevin.drift_mean", {"kept", "removed"}) == "removed";
+    if (g["noise"]) m.langevin_solenoidal = r.word(g["noise"], "turbulence.langevin.noise", {"white", "solenoidal"}) == "solenoidal";
     if (g["seed"]) m.seed = static_cast<std::uint64_t>(r.integer(g["seed"], "turbulence.langevin.seed", 0, 9007199254740991LL));
   }
   if (m.model == TurbulenceModel::Langevin) {

@@ -53,6 +53,7 @@ struct Turbulence {
   std::uint64_t seed = 0;
   bool langevin_averaged = false;  // turbulence.langevin.mean_gradient: averaged (kernels/turbulence/Langevin.hpp)
   bool langevin_drift_mean_removed = false;  // turbulence.langevin.drift_mean: removed (kernels/turbulence/Langevin.hpp)
+  bool langevin_solenoidal = false;  // turbulence.langevin.noise: solenoidal (kernels/turbulence/Langevin.hpp)
   bool on() const { return model != TurbulenceModel::None; }
   // the model's nu_T enters the viscous terms (the Langevin model's stress is its particles' motion)
   bool eddy_viscous() const { return on() && model != TurbulenceModel::Langevin; }

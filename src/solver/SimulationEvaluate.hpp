@@ -113,6 +113,7 @@ PassContext<D> Simulation<D>::context(const LevelSpan<D>& L) const {
     c.langevin = LangevinConstants{tu.langevin_c1, tu.langevin_c2, tu.langevin_c0, tu.c_mu, tu.seed};
     c.langevin.averaged = tu.langevin_averaged;
     c.langevin.drift_mean_removed = tu.langevin_drift_mean_removed;
+    c.langevin.solenoidal = tu.langevin_solenoidal;
     c.log_law = LogLaw::make(tu.kappa, scene_.nu, tu.smooth_constant, tu.wall_function == WallLaw::Rough ? tu.roughness : 0.0,
                              tu.rough_constant);
   }
