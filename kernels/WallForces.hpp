@@ -82,16 +82,17 @@ struct WallTraction {
         const Vec<D> rel = ui - uq, ut = rel - dot(rel, n) * n;
         const double mag = kmath::sqrt(norm2(ut)), us = u_star(i);
         if (mag > 0.0) sv += (w * us * us / mag) * ut;
-      } else {  // kinematic over nu, or (nu + nu_T) / nu
-        const double f = shear == WallShear::Eddy ? 1.0 + nu_T(i) / nu : 1.0;
-        sv += (-w * f / fluid_side_dn<D>(xiq, n, dn_min)) * (ui - uq);
+      } else if (shear == WallShear::Eddy) {  // kinematic: (nu + nu_T,i) (u_i - u_q) / |d_n|
+        sv += (-w * (nu + nu_T(i)) / fluid_side_dn<D>(xiq, n, dn_min)) * (ui - uq);
+      } else {  // kinematic over nu
+        sv += (-w / fluid_side_dn<D>(xiq, n, dn_min)) * (ui - uq);
       }
       sw += w;
     });
     const double s = wall.s(q);
     for (int k = 0; k < D; ++k) {
       traction(q, k) = sw > 0 ? s * sp / sw * n[k] : 0.0;
-      const double tau = shear == WallShear::LogLaw ? s * rho0 * sv[k] / sw : s * rho0 * nu * sv[k] / sw;
+      const double tau = shear == WallShear::Molecular ? s * rho0 * nu * sv[k] / sw : s * rho0 * sv[k] / sw;
       traction(q, D + k) = (sw > 0 && wall.no_slip(q)) ? tau : 0.0;
     }
   }

@@ -20,8 +20,9 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, std::i
   f.attribute("initial_momentum_y", h.initial_momentum[1]);
   f.attribute("initial_momentum_z", h.initial_momentum[2]);
   f.attribute("checksum", h.checksum);
-  if (h.fields_checksum != 0) f.attribute("fields_checksum", h.fields_checksum);
+  for (const auto& [label, sum] : h.field_checksums) f.attribute(("checksum_" + label).c_str(), sum);
   f.attribute("wall_corrections", h.wall_corrections);
+  f.attribute("langevin_impulse", std::vector<double>(h.langevin_impulse, h.langevin_impulse + 3));
   f.attribute("run_wall_seconds", h.run_wall_seconds);
   f.attribute("run_cpu_seconds", h.run_cpu_seconds);
   f.attribute("initial_particles", h.initial_particles);
@@ -84,10 +85,16 @@ CheckpointSlice read_checkpoint(const std::string& path, const Communicator& com
     h.checksum = r.attribute_u64("checksum");
     // counters added after the format's first files: 0 when absent
     h.wall_corrections = r.has("wall_corrections") ? r.attribute_int("wall_corrections") : 0;
+    if (r.has("langevin_impulse")) {
+      const std::vector<double> v = r.attribute_doubles("langevin_impulse");
+      for (std::size_t k = 0; k < 3 && k < v.size(); ++k) h.langevin_impulse[k] = v[k];
+    }
     h.run_wall_seconds = r.has("run_wall_seconds") ? r.attribute_double("run_wall_seconds") : 0;
     h.run_cpu_seconds = r.has("run_cpu_seconds") ? r.attribute_double("run_cpu_seconds") : 0;
     h.initial_particles = r.has("initial_particles") ? r.attribute_int("initial_particles") : 0;
-    h.fields_checksum = r.has("fields_checksum") ? r.attribute_u64("fields_checksum") : 0;
+    for (const std::string& label : optional_checkpoint_fields())
+      if (r.has(("checksum_" + label).c_str())) h.field_checksums[label] = r.attribute_u64(("checksum_" + label).c_str());
+    if (r.has("checksum_open_role")) h.field_checksums["open_role"] = r.attribute_u64("checksum_open_role");
     std::vector<std::string> names = checkpoint_fields();
     if (r.has("refinement_zones")) {
       // written by a run with refinement zones: its APR state and fields (all of them)

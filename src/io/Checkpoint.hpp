@@ -62,7 +62,8 @@ struct CheckpointHeader {
   double initial_mass = 0;
   double initial_momentum[3] = {0, 0, 0};
   std::uint64_t checksum = 0;  // of the state fields (kernels/StateHash.hpp)
-  std::uint64_t fields_checksum = 0;  // of the fields beyond the state and the APR ones; 0: none, or a file written before it
+  std::map<std::string, std::uint64_t> field_checksums;  // of each field beyond the state and the APR ones (checksum_LABEL)
+  double langevin_impulse[3] = {0, 0, 0};  // the Langevin increments' momentum since t = 0, all ranks (langevin.csv)
   std::int64_t wall_corrections = 0;  // impermeability corrections since t = 0, all ranks (kernels/WallImpermeability.hpp)
   // what the run has cost since t = 0 over every process that led to this checkpoint (the slowest
   // rank's wall seconds, rank 0's CPU seconds); 0 in a checkpoint written before they were recorded

@@ -64,7 +64,7 @@ class Checkpointer {
     h.initial_mass = d0.mass;
     for (int k = 0; k < 3; ++k) h.initial_momentum[k] = d0.momentum[k];
     h.checksum = state_checksum(sim);
-    h.fields_checksum = fields_checksum(sim);
+    h.field_checksums = field_checksums(sim);
     h.run_wall_seconds = comm_.max(cost.first);
     h.run_cpu_seconds = cost.second;
     h.initial_particles = static_cast<std::int64_t>(initial_particles);
@@ -116,14 +116,16 @@ Simulation<D> start_simulation(const Scene& scene, const RunOptions& opt, const 
   if (restart && sim.refinement_on() && refinement_checksum(sim) != restart->header.refinement.checksum)
     throw CheckpointError(opt.restart + ": the APR fields (birth_level, level, guard, mother, parent_id) do not match the checksum "
                           "stored with them (refinement_checksum): the file is corrupted");
-  if (restart && restart->header.fields_checksum != 0) {
-    std::vector<std::string> names;
-    if (fields_checksum(sim, &names) != restart->header.fields_checksum) {
-      std::string list;
-      for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-      throw CheckpointError(opt.restart + ": the fields " + list +
-                            " do not match the checksum stored with them (fields_checksum): the file is corrupted");
+  if (restart && !restart->header.field_checksums.empty()) {
+    // each field the case read from the file (one it does not need is not read)
+    std::string bad;
+    for (const auto& [label, sum] : field_checksums(sim)) {
+      const auto stored = restart->header.field_checksums.find(label);
+      if (stored != restart->header.field_checksums.end() && stored->second != sum) bad += (bad.empty() ? "" : ", ") + label;
     }
+    if (!bad.empty())
+      throw CheckpointError(opt.restart + ": the field " + bad + " does not match the checksum stored with it (checksum_" +
+                            bad.substr(0, bad.find(',')) + "): the file is corrupted");
   }
   return sim;
 }

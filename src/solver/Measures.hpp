@@ -94,9 +94,9 @@ template <int D>
 CheckpointRefinement refinement_state(const Simulation<D>& sim);
 template <int D>
 std::uint64_t refinement_checksum(const Simulation<D>& sim);
-// the checksum of the other fields a checkpoint carries (open roles, k, epsilon, the Langevin
-// model's averaged gradient); 0 when the run has none; `names` gets their labels
+// the checksum of each other field a checkpoint carries (open roles, k, epsilon, the Langevin
+// model's averaged gradient), by label
 template <int D>
-std::uint64_t fields_checksum(const Simulation<D>& sim, std::vector<std::string>* names = nullptr);
+std::map<std::string, std::uint64_t> field_checksums(const Simulation<D>& sim);
 
 }  // namespace ondine

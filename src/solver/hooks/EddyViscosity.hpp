@@ -11,8 +11,8 @@
 // diagonal implicit), split from the Runge-Kutta step of the flow. The Langevin model moves the
 // owned particles' velocities at each step's end by its increment over the step
 // (kernels/turbulence/Langevin.hpp), split likewise; <u>, nu_T, k and epsilon are its by-products.
-// The increments' momentum, sum_i m_i (u_1 - u)_i, is summed over the steps since the run's
-// start (or restart) for the momentum budget (observers/LangevinMomentumSeries.hpp).
+// The increments' momentum, sum_i m_i (u_1 - u)_i, is summed over the steps since t = 0 (carried
+// by checkpoints) for the momentum budget (observers/LangevinMomentumSeries.hpp).
 #include <array>
 
 #include "kernels/turbulence/KEpsilon.hpp"
@@ -54,6 +54,8 @@ class EddyViscosity final : public StepHook<D> {
     p.allocate(field::DissipationRateNext{});
   }
   void start(StepState<D>& s, const CheckpointSlice* restart) override {
+    if (langevin_ && restart && s.comm().rank() == 0)  // a global sum, carried by rank 0
+      for (int k = 0; k < 3; ++k) impulse_[k] = restart->header.langevin_impulse[k];
     if (!k_eps_ || restart) return;  // a restart reads k and epsilon from its checkpoint
     ParticleSet<D>& p = s.particles();
     Kokkos::deep_copy(p.get(field::TurbulentKineticEnergy{}), s.scene().turbulence.initial_k);
@@ -130,9 +132,13 @@ class EddyViscosity final : public StepHook<D> {
     s.domain().halos_stale();
   }
 
+  void save(const Communicator& comm, CheckpointHeader& h) const override {
+    if (!langevin_) return;
+    const std::vector<double> v = langevin_impulse(comm);
+    for (int k = 0; k < D; ++k) h.langevin_impulse[k] = v[k];
+  }
   bool langevin() const { return langevin_; }
-  // the Langevin increments' momentum since the run's start or restart (kg m/s; per metre of
-  // span in 2D), all ranks
+  // the Langevin increments' momentum since t = 0 (kg m/s; per metre of span in 2D), all ranks
   std::vector<double> langevin_impulse(const Communicator& comm) const {
     std::vector<double> v(impulse_.begin(), impulse_.begin() + D);
     comm.sum_in_place(v);

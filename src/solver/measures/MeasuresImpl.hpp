@@ -23,4 +23,4 @@
   template std::uint64_t state_checksum<D>(const Simulation<D>&);                              \
   template CheckpointRefinement refinement_state<D>(const Simulation<D>&);                     \
   template std::uint64_t refinement_checksum<D>(const Simulation<D>&);                         \
-  template std::uint64_t fields_checksum<D>(const Simulation<D>&, std::vector<std::string>*);
+  template std::map<std::string, std::uint64_t> field_checksums<D>(const Simulation<D>&);

@@ -1,6 +1,8 @@
 #pragma once
 // A checkpoint's rows and the state checksums (solver/Measures.hpp).
 #include <algorithm>
+#include <map>
+#include <string>
 
 #include "kernels/StateHash.hpp"
 #include "solver/CheckpointFields.hpp"
@@ -67,24 +69,21 @@ std::uint64_t state_checksum(const Simulation<D>& sim) {
   return sim.comm().sum_u64(static_cast<std::uint64_t>(h));
 }
 
-// the checksum of the fields a checkpoint carries beyond the state and the APR fields (each has
-// its own); 0 when there are none. `names`, when given, gets their labels.
+// the checksum of each field a checkpoint carries beyond the state and the APR fields (those
+// have theirs), by label
 template <int D>
-std::uint64_t fields_checksum(const Simulation<D>& sim, std::vector<std::string>* names) {
+std::map<std::string, std::uint64_t> field_checksums(const Simulation<D>& sim) {
   const ParticleSet<D>& p = sim.particles();
   const int n_own = static_cast<int>(sim.size());
   Kokkos::View<int*, MemSpace> index("ondine::Checkpoint::index", n_own);
   Kokkos::parallel_for("ondine::Checkpoint::index", Kokkos::RangePolicy<ExecSpace>(0, n_own), Iota32{index});
   const std::vector<std::string>& base = checkpoint_fields();
   const std::vector<std::string>& apr = checkpoint_refinement_fields();
-  bool any = false;
-  unsigned long long h = 0;
+  std::map<std::string, std::uint64_t> out;
   auto take = [&](auto tag) {
     using Tag = decltype(tag);
     const std::string label = Tag::label;
     if (std::find(base.begin(), base.end(), label) != base.end() || std::find(apr.begin(), apr.end(), label) != apr.end()) return;
-    any = true;
-    if (names) names->push_back(label);
     using V = field_view_t<Tag, D>;
     exchange::Rows dev("ondine::Checkpoint::rows", n_own, exchange::width_of<V>());
     Kokkos::parallel_for("ondine::Checkpoint::pack", Kokkos::RangePolicy<ExecSpace>(0, n_own),
@@ -94,12 +93,10 @@ std::uint64_t fields_checksum(const Simulation<D>& sim, std::vector<std::string>
     unsigned long long f = 0;
     Kokkos::parallel_reduce("ondine::FieldRowsHash", Kokkos::RangePolicy<ExecSpace>(0, n_own),
                             FieldRowsHash<D>{dev, p.get(field::GlobalId{}), salt}, f);
-    h += f;
+    out[label] = sim.comm().sum_u64(static_cast<std::uint64_t>(f));
   };
   for_each_checkpoint_field(p, sim.refinement_on(), take);
-  if (!any) return 0;
-  const std::uint64_t all = sim.comm().sum_u64(static_cast<std::uint64_t>(h));
-  return all == 0 ? 1 : all;  // 0 stands for none
+  return out;
 }
 
 }  // namespace ondine

@@ -34,6 +34,10 @@ WallTractions<D> tractions_at(Simulation<D>& sim, const WallPoints<D>& points, b
   WallTractions<D> t{Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace>("ondine::NFM::traction", nq, 2 * D),
                      Kokkos::View<int*, MemSpace>("ondine::NFM::counted", nq)};
   PassContext<D> c = sim.context(sim.levels().front());
+  // the wall shear of a turbulence model reads u_* or nu_T of the halo copies too (the owner's,
+  // from the last stage)
+  if (c.wall_shear == WallShear::LogLaw) state.domain().refresh(state.particles(), field::FrictionVelocity{});
+  if (c.wall_shear == WallShear::Eddy) state.domain().refresh(state.particles(), field::EddyViscosity{});
   c.R = sim.R();  // with zones each SPH particle with its level's radius (WallForces.hpp), R the coarsest
   c.nu = nu;
   c.wall = points;
