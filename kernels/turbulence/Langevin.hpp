@@ -158,6 +158,28 @@ struct SolenoidalNoise {
 template <int D>
 using LangevinGradientRows = GradientRows<D, field::LangevinGradientX, field::LangevinGradientY, field::LangevinGradientZ>;
 
+// The kernel mean of a vector field f over particle i's support, Shepard-normalised with the
+// particle itself [V&I 17]: sum_j w_j f_j W_ij / sum_j w_j W_ij; with `centroid`, also the
+// support's centroid offset d_i = sum_j w_j (x_j - x_i) W_ij / sum_j w_j W_ij
+template <int D, class Kernel, class Field>
+KOKKOS_INLINE_FUNCTION Vec<D> kernel_mean(const NeighbourList<D>& list, const PeriodicBox<D>& box, const Kernel& W, double R2,
+                                          const field_view_t<field::Position, D>& x, const field_view_t<field::Density, D>& rho,
+                                          const field_view_t<field::Mass, D>& m, const Field& f, const int i,
+                                          Vec<D>* centroid = nullptr) {
+  const double wi = m(i) / rho(i) * W.value(0.0);
+  Vec<D> sum = wi * load<D>(f, i), d = Vec<D>::zero();
+  double shepard = wi;
+  for_each_neighbour_within<D>(list, box, x, i, load<D>(x, i), R2, [&](const int j, const Vec<D>& xij, const double r) {
+    const double wW = m(j) / rho(j) * W.value(r);
+    sum = sum + wW * load<D>(f, j);
+    d = d + (-wW) * xij;
+    shepard += wW;
+  });
+  for (int a = 0; a < D; ++a) sum[a] /= shepard, d[a] /= shepard;
+  if (centroid) *centroid = d;
+  return sum;
+}
+
 template <int D, class Kernel>
 struct LangevinMean {
   NeighbourList<D> list;
@@ -172,19 +194,11 @@ struct LangevinMean {
   field_view_t<field::LangevinOffset, D> offset;    // d
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
-    const Vec<D> xi = load<D>(x, i);
-    const double wi = m(i) / rho(i) * W.value(0.0);
-    Vec<D> sum = wi * load<D>(u, i), centroid = Vec<D>::zero();
-    double shepard = wi;
-    for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>& xij, const double r) {
-      const double wW = m(j) / rho(j) * W.value(r);
-      sum = sum + wW * load<D>(u, j);
-      centroid = centroid + (-wW) * xij;
-      shepard += wW;
-    });
+    Vec<D> d;
+    const Vec<D> ut = kernel_mean<D>(list, box, W, R2, x, rho, m, u, i, &d);
     for (int a = 0; a < D; ++a) {
-      mean(i, a) = sum[a] / shepard;
-      offset(i, a) = centroid[a] / shepard;
+      mean(i, a) = ut[a];
+      offset(i, a) = d[a];
     }
   }
 };
@@ -281,16 +295,8 @@ struct LangevinDriftMean {
   field_view_t<field::LangevinVelocity, D> u_next;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
-    const Vec<D> xi = load<D>(x, i);
-    const double wi = m(i) / rho(i) * W.value(0.0);
-    Vec<D> sum = wi * load<D>(drift, i);
-    double shepard = wi;
-    for_each_neighbour_within<D>(list, box, x, i, xi, R2, [&](const int j, const Vec<D>&, const double r) {
-      const double wW = m(j) / rho(j) * W.value(r);
-      sum = sum + wW * load<D>(drift, j);
-      shepard += wW;
-    });
-    for (int a = 0; a < D; ++a) u_next(i, a) -= sum[a] / shepard;
+    const Vec<D> mean = kernel_mean<D>(list, box, W, R2, x, rho, m, drift, i);
+    for (int a = 0; a < D; ++a) u_next(i, a) -= mean[a];
   }
 };
 

@@ -53,6 +53,11 @@ const std::vector<ValidationCase>& catalogue() {
                                                           "shedding_periods"};
   // the same, with the refined run's cost and limiter
   static const std::vector<std::string> cylinder_apr_shown = with(cylinder_shown, {"wall_time_over_fine", "cpu_time_over_fine", "guards_limited"});
+  // the Langevin channel: the profile, the slope it shows and the fluctuations, and the momentum
+  // budget over the run's second half (observers/LangevinMomentumSeries.hpp)
+  static const std::vector<std::string> langevin_shown = {"kappa_fit", "kappa_error", "fluctuation_ratio", "friction_velocity_error",
+                                                          "velocity_l2", "y_plus_first_row", "langevin_force_ratio", "wall_force_ratio",
+                                                          "momentum_budget_residual"};
   // the wedge against its similarity solution (reference/WedgeImpact.hpp)
   static const std::vector<std::string> wedge_shown = {"pressure_peak_ratio", "pressure_peak_relative_error", "pressure_peak_position_error",
                                                        "pressure_profile_error", "force_coefficient", "force_coefficient_error",
@@ -392,14 +397,29 @@ const std::vector<ValidationCase>& catalogue() {
       // docs/validation.md). Resolution: particles per half-width; quick: 5 s
       {"turbulent_channel_langevin_2d", "cases/turbulent_channel_langevin_2d.yaml", 0.5, {{0.025, false}, {0.0125, true}},
        stable({{"mean_velocity_l2", 0.1}, {"wall_leaks", 0.5}}), {}, {},
-       {"kappa_fit", "kappa_error", "fluctuation_ratio", "friction_velocity_error", "velocity_l2", "y_plus_first_row"},
-       {"time.duration=5"}},
+       langevin_shown, {"time.duration=5"}},
       // the same with the gradient of the means averaged along the particles' paths over the
       // model's turnover time k / epsilon (turbulence.langevin.mean_gradient: averaged)
       {"turbulent_channel_langevin_averaged_2d", "cases/turbulent_channel_langevin_2d.yaml", 0.5, {{0.025, false}, {0.0125, true}},
        stable({{"mean_velocity_l2", 0.25}, {"wall_leaks", 0.5}}), {"turbulence.langevin.mean_gradient=averaged"}, {},
-       {"kappa_fit", "kappa_error", "fluctuation_ratio", "friction_velocity_error", "velocity_l2", "y_plus_first_row"},
-       {"time.duration=5"}},
+       langevin_shown, {"time.duration=5"}},
+      // the two options of the model's consistency (docs/validation.md V6's budget): the kernel mean
+      // of the drift removed (turbulence.langevin.drift_mean: removed), with either gradient; the
+      // solenoidal noise (turbulence.langevin.noise: solenoidal) with the averaged gradient, with
+      // and without it (with the filtered gradient the solenoidal noise diverges at h/20)
+      {"turbulent_channel_langevin_drift_removed_2d", "cases/turbulent_channel_langevin_2d.yaml", 0.5, {{0.025, false}},
+       stable({{"mean_velocity_l2", 0.25}, {"wall_leaks", 0.5}}), {"turbulence.langevin.drift_mean=removed"}, {},
+       langevin_shown, {"time.duration=5"}},
+      {"turbulent_channel_langevin_averaged_drift_removed_2d", "cases/turbulent_channel_langevin_2d.yaml", 0.5, {{0.025, false}},
+       stable({{"mean_velocity_l2", 0.25}, {"wall_leaks", 0.5}}),
+       {"turbulence.langevin.mean_gradient=averaged", "turbulence.langevin.drift_mean=removed"}, {}, langevin_shown, {"time.duration=5"}},
+      {"turbulent_channel_langevin_averaged_solenoidal_2d", "cases/turbulent_channel_langevin_2d.yaml", 0.5, {{0.025, false}},
+       stable({{"mean_velocity_l2", 0.25}, {"wall_leaks", 0.5}}),
+       {"turbulence.langevin.mean_gradient=averaged", "turbulence.langevin.noise=solenoidal"}, {}, langevin_shown, {"time.duration=5"}},
+      {"turbulent_channel_langevin_averaged_solenoidal_drift_removed_2d", "cases/turbulent_channel_langevin_2d.yaml", 0.5,
+       {{0.025, false}}, stable({{"mean_velocity_l2", 0.25}, {"wall_leaks", 0.5}}),
+       {"turbulence.langevin.mean_gradient=averaged", "turbulence.langevin.noise=solenoidal", "turbulence.langevin.drift_mean=removed"},
+       {}, langevin_shown, {"time.duration=5"}},
       // SPHERIC Test 2 with Smagorinsky's LES closure (C_s = 0.12, the peer's) in place of the
       // artificial viscosity, water's nu = 1e-6 m^2/s, beside the laminar record: the first
       // impact's pressures, their noise (RMS against the measured series) and the heights; the

@@ -33,8 +33,9 @@ class DiagnosticsSeries : public Observer<D> {
     mechanical(d.kinetic_energy + d.potential_energy);
   }
 
-  void resume(double t_start, ResumedRows&) override {
+  void resume(double t_start, ResumedRows& rows) override {
     if (!csv_.resume(t_start)) return;
+    rows["diagnostics.csv"] = csv_.resumed_rows();
     const std::size_t c = 6 + (D == 3);  // kinetic_energy
     for (const auto& row : csv_.resumed_rows())
       if (row.size() >= c + 5) {

@@ -38,6 +38,14 @@ WallTractions<D> tractions_at(Simulation<D>& sim, const WallPoints<D>& points, b
   // from the last stage)
   if (c.wall_shear == WallShear::LogLaw) state.domain().refresh(state.particles(), field::FrictionVelocity{});
   if (c.wall_shear == WallShear::Eddy) state.domain().refresh(state.particles(), field::EddyViscosity{});
+  // ... and the MUSCL state (4.30) the owners' density gradient (and velocity gradient): the
+  // output's migration on several ranks made new halo copies, which carry neither
+  ParticleSet<D>& p = state.particles();
+  if (p.has(field::DensityGradient{})) state.domain().refresh(p, field::DensityGradient{});
+  if (c.velocity_muscl) {
+    state.domain().refresh(p, field::VelocityGradientX{}, field::VelocityGradientY{});
+    if constexpr (D == 3) state.domain().refresh(p, field::VelocityGradientZ{});
+  }
   c.R = sim.R();  // with zones each SPH particle with its level's radius (WallForces.hpp), R the coarsest
   c.nu = nu;
   c.wall = points;
