@@ -6,7 +6,8 @@
 // u' (a gradient read along the particles' paths) move the fluid's momentum. With the body force
 // and the walls' force (walls.csv) it closes the momentum budget of d(momentum)/dt
 // (diagnostics.csv). A restart takes the sum from the checkpoint and the last kept row's.
-// Figures, over the run's second half [t_end / 2, t_end] (the samples at the output instants;
+// Figures, over the run's second half, from the first output instant at or after t_end / 2 to
+// t_end (the samples at the output instants;
 // V6's budget, validation.md), each over the drive F = (body force + gravity)_x M:
 //   langevin_force_ratio: the increments' mean force, (I(t_end) - I(t_a)) / (t_end - t_a);
 //   wall_force_ratio: the walls' mean force on the fluid, minus the trapezoid mean of walls.csv's
@@ -28,7 +29,7 @@ class LangevinMomentumSeries : public SeriesObserver<D> {
   LangevinMomentumSeries(const std::string& out_dir, bool writer, const Simulation<D>& sim)
       : SeriesObserver<D>(out_dir, "langevin.csv", writer), hook_(*sim.template find_hook<EddyViscosity<D>>()),
         last_(hook_.langevin_impulse(sim.comm())), t_(sim.time()),
-        drive_x_(sim.scene().body_force[0] + sim.scene().gravity[0]) {
+        drive_x_(sim.scene().body_force[0] + sim.scene().gravity[0]), has_walls_(!sim.walls().empty()) {
     csv_.text() << "time,step";
     for (int k = 0; k < D; ++k) csv_.text() << ",force_" << "xyz"[k];
     for (int k = 0; k < D; ++k) csv_.text() << ",impulse_" << "xyz"[k];
@@ -56,21 +57,25 @@ class LangevinMomentumSeries : public SeriesObserver<D> {
   void resume(double t_start, ResumedRows& rows) override {
     SeriesObserver<D>::resume(t_start, rows);
     const auto& kept = csv_.resumed_rows();
-    if (kept.empty() || kept.back().size() < 2 + 2 * D) return;
+    const auto& diag_rows = rows["diagnostics.csv"];
+    if (kept.empty() || kept.back().size() < 2 + 2 * D) {
+      budget_unknown_ = !diag_rows.empty();  // an earlier run without langevin.csv's rows: no budget
+      return;
+    }
     t_ = kept.back()[0];
     for (int k = 0; k < D; ++k) last_[k] = kept.back()[2 + D + k];
     const auto& wall_rows = rows["walls.csv"];
-    const auto& diag_rows = rows["diagnostics.csv"];
-    if (wall_rows.size() != kept.size() || diag_rows.size() != kept.size()) {
-      budget_unknown_ = !kept.empty();  // an earlier run's rows that do not line up: no budget
+    if ((has_walls_ && wall_rows.size() != kept.size()) || diag_rows.size() != kept.size()) {
+      budget_unknown_ = true;  // an earlier run's rows that do not line up: no budget
       return;
     }
     const std::size_t per_wall = 2 * D + (D == 2 ? 1 : 3);
     for (std::size_t r = 0; r < kept.size(); ++r) {
       double walls = 0;
-      for (std::size_t c = 2; c + per_wall <= wall_rows[r].size(); c += per_wall) walls += wall_rows[r][c] + wall_rows[r][c + D];
+      if (has_walls_)
+        for (std::size_t c = 2; c + per_wall <= wall_rows[r].size(); c += per_wall) walls += wall_rows[r][c] + wall_rows[r][c + D];
       // diagnostics.csv: time, step, dt, mass, momentum_x
-      if (diag_rows[r].size() < 5 || wall_rows[r][0] != kept[r][0] || diag_rows[r][0] != kept[r][0]) {
+      if (diag_rows[r].size() < 5 || (has_walls_ && wall_rows[r][0] != kept[r][0]) || diag_rows[r][0] != kept[r][0]) {
         budget_unknown_ = true;
         samples_.clear();
         return;
@@ -83,7 +88,8 @@ class LangevinMomentumSeries : public SeriesObserver<D> {
     if (budget_unknown_ || end.diverged || samples_.size() < 3) return;
     const double t_end = samples_.back().t, t_a = 0.5 * t_end;
     std::size_t a = 0;
-    while (a + 2 < samples_.size() && samples_[a].t < t_a) ++a;
+    // the first sample at or after t_end / 2 (a resumed time is read back to 12 digits)
+    while (a + 2 < samples_.size() && samples_[a].t < t_a * (1.0 - 1e-9)) ++a;
     const Sample &s0 = samples_[a], &s1 = samples_.back();
     const double span = s1.t - s0.t;
     if (!(span > 0)) return;
@@ -109,6 +115,7 @@ class LangevinMomentumSeries : public SeriesObserver<D> {
   std::vector<double> last_;
   double t_;
   double drive_x_;
+  bool has_walls_;  // walls.csv exists (WallForceSeries posts NAME.fx)
   std::vector<Sample> samples_;  // one per output instant: a few hundred
   bool budget_unknown_ = false;
 };
