@@ -20,7 +20,9 @@ for np in 2 4; do
   "$compare" "$out/np1/$last" "$out/np$np/$last" "$tol" ${COMPARE_FIELDS:-}
   if [ "${COMPARE_WALLS:-0}" = 1 ]; then
     /usr/bin/python3 - "$out/np1" "$out/np$np" "$tol" <<'PY'
-import os, sys
+import math, os, sys
+if not os.path.exists(os.path.join(sys.argv[1], "walls.csv")):
+    sys.exit("COMPARE_WALLS=1: no walls.csv in " + sys.argv[1])
 bad = 0
 for name in ("walls.csv", "wall_sensors.csv"):
     if not os.path.exists(os.path.join(sys.argv[1], name)):
@@ -31,9 +33,10 @@ for name in ("walls.csv", "wall_sensors.csv"):
     a, b = ([float(v) for v in r[-2].split(",")] for r in rows)
     # the files hold 12 significant digits: a last-digit flip is 1e-12 of a value
     tol, scale = max(float(sys.argv[3]), 1e-11), max(abs(a[k]) for k in cols)
-    worst = max(abs(a[k] - b[k]) for k in cols)
+    diffs = [abs(a[k] - b[k]) for k in cols]
+    worst = float("nan") if any(math.isnan(d) for d in diffs) else max(diffs)  # a NaN fails
     print("%s, last row: largest difference %.3g against the largest value %.3g" % (name, worst, scale))
-    bad |= not (a[1] == b[1] and abs(a[0] - b[0]) <= tol * abs(a[0]) and worst <= tol * scale)  # same step, time
+    bad |= not (a[1] == b[1] and abs(a[0] - b[0]) <= tol * abs(a[0]) and worst <= tol * scale)  # same step, time; NaN fails
 sys.exit(bad)
 PY
   fi

@@ -3,6 +3,7 @@
 # ranks) ends where an uninterrupted run of STEPS steps ends (on NP ranks), within
 # TOL relative (0: bitwise), field by field, particles matched by id.
 # usage: check_restart.sh ONDINE COMPARE CASE OUT NP NP_RESTART STEPS HALF TOL [--set ...]
+# COMPARE_FIELDS (environment, optional): the snapshot fields compared (default: ondine_compare's)
 # COMPARE_SUMMARY (environment, optional): summary.json's figures (errors) that must agree too,
 # within COMPARE_SUMMARY_TOL absolute (default 1e-8: figures over the whole run, made again from
 # the CSV rows read back at the restart, which hold 12 significant digits)
@@ -19,7 +20,7 @@ rm -rf "$out"
 grep -q "\"restarted_from\"" "$out/parts/summary.json"
 a=$(ls "$out/whole"/*_0*.h5 | sort | tail -1); b=$(ls "$out/parts"/*_0*.h5 | sort | tail -1)
 echo "uninterrupted ($np ranks) vs restarted at step $half ($np -> $np2 ranks):"
-"$compare" "$a" "$b" "$tol"
+"$compare" "$a" "$b" "$tol" ${COMPARE_FIELDS:-}
 if [ -n "${COMPARE_SUMMARY:-}" ]; then
   /usr/bin/python3 - "$out/whole/summary.json" "$out/parts/summary.json" "${COMPARE_SUMMARY_TOL:-1e-8}" ${COMPARE_SUMMARY} <<'PY'
 import json, sys
@@ -31,7 +32,7 @@ for name in sys.argv[4:]:
         print("summary.json: %s missing (uninterrupted: %s, restarted: %s)" % (name, name in a, name in b)); bad = 1; continue
     d = abs(a[name] - b[name])
     print("summary.json %s: %.12g and %.12g (difference %.3g)" % (name, a[name], b[name], d))
-    bad |= d > tol
+    bad |= not (d <= tol)  # a NaN fails
 sys.exit(bad)
 PY
 fi
