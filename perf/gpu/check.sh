@@ -12,7 +12,9 @@
 #   bench     perf/ondine_bench --quick (the pair rate)
 #   unit      the unit tests (ondine_tests "[unit]")
 #   pairbench the hand-written OpenMP pair loop on the machine's cores (the yardstick)
-#   validate:NAME[,LIMIT]  `ondine validate --case NAME --level full` (limit LIMIT s, default 150)
+#   validate:NAME[,LIMIT[,ARG...]]  `ondine validate --case NAME --level full ARG...` (limit LIMIT s,
+#             default 150), e.g. validate:apr_cylinder_re100_2d,540,--variant,apr_lts (the refined
+#             cylinder with local time stepping alone)
 #   case:NAME,FILE,ARG,...  `ondine run FILE` with these arguments (commas for spaces) (limit 150 s)
 #   run:NAME,ARG,...  SPHERIC Test 2 with these `ondine run` arguments (commas for spaces),
 #             e.g. run:dx015,--set,discretisation.dx=0.015 (limit 150 s)
@@ -93,7 +95,7 @@ for s in "${steps[@]}"; do
       fi ;;
     validate:*)
       IFS=, read -r -a args <<< "${s#validate:}"
-      step "${args[0]}" "${args[1]:-150}" "$bin/ondine" validate --case "${args[0]}" --level full --out "$work/runs/${args[0]}" ;;
+      step "${args[0]}" "${args[1]:-150}" "$bin/ondine" validate --case "${args[0]}" --level full --out "$work/runs/${args[0]}" "${args[@]:2}" ;;
     case:*)
       IFS=, read -r -a args <<< "${s#case:}"
       step "${args[0]}" 150 "$bin/ondine" run "${args[1]}" --quiet --out "$work/runs/${args[0]}" "${args[@]:2}" ;;
