@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "observers/SeriesObserver.hpp"
+#include "observers/WallForceSeries.hpp"
 #include "solver/hooks/EddyViscosity.hpp"
 
 namespace ondine {
@@ -29,7 +30,9 @@ class LangevinMomentumSeries : public SeriesObserver<D> {
   LangevinMomentumSeries(const std::string& out_dir, bool writer, const Simulation<D>& sim)
       : SeriesObserver<D>(out_dir, "langevin.csv", writer), hook_(*sim.template find_hook<EddyViscosity<D>>()),
         last_(hook_.langevin_impulse(sim.comm())), t_(sim.time()),
-        drive_x_(sim.scene().body_force[0] + sim.scene().gravity[0]), has_walls_(!sim.walls().empty()) {
+        drive_x_(sim.scene().body_force[0] + sim.scene().gravity[0]) {
+    if (!sim.walls().empty())  // walls.csv's pressure_fx column of each wall (viscous_fx is D further)
+      for (const auto& w : sim.scene().walls) wall_columns_.push_back(WallForceSeries<D>::pressure_fx_column(sim.scene(), w.name));
     csv_.text() << "time,step";
     for (int k = 0; k < D; ++k) csv_.text() << ",force_" << "xyz"[k];
     for (int k = 0; k < D; ++k) csv_.text() << ",impulse_" << "xyz"[k];
@@ -42,7 +45,7 @@ class LangevinMomentumSeries : public SeriesObserver<D> {
     double walls = 0;
     for (const auto& w : scene.walls) walls += now.posted[w.name + ".fx"];
     const Diagnostics& d = now.diagnostics();
-    samples_.push_back({now.sim.time(), impulse[0], walls, d.momentum[0], (scene.body_force[0] + scene.gravity[0]) * d.mass});
+    samples_.push_back({now.sim.time(), impulse[0], walls, d.momentum[0], drive_x_ * d.mass});
     const double span = now.sim.time() - t_;
     std::ostringstream& row = this->row(now.sim);
     for (int k = 0; k < D; ++k) row << "," << (span > 0 ? (impulse[k] - last_[k]) / span : 0.0);
@@ -65,17 +68,19 @@ class LangevinMomentumSeries : public SeriesObserver<D> {
     t_ = kept.back()[0];
     for (int k = 0; k < D; ++k) last_[k] = kept.back()[2 + D + k];
     const auto& wall_rows = rows["walls.csv"];
-    if ((has_walls_ && wall_rows.size() != kept.size()) || diag_rows.size() != kept.size()) {
+    const bool has_walls = !wall_columns_.empty();
+    if ((has_walls && wall_rows.size() != kept.size()) || diag_rows.size() != kept.size()) {
       budget_unknown_ = true;  // an earlier run's rows that do not line up: no budget
       return;
     }
-    const std::size_t per_wall = 2 * D + (D == 2 ? 1 : 3);
     for (std::size_t r = 0; r < kept.size(); ++r) {
       double walls = 0;
-      if (has_walls_)
-        for (std::size_t c = 2; c + per_wall <= wall_rows[r].size(); c += per_wall) walls += wall_rows[r][c] + wall_rows[r][c + D];
+      bool short_row = false;
+      for (const std::size_t c : wall_columns_)
+        if (c + D < wall_rows[r].size()) walls += wall_rows[r][c] + wall_rows[r][c + D];
+        else short_row = true;
       // diagnostics.csv: time, step, dt, mass, momentum_x
-      if (diag_rows[r].size() < 5 || (has_walls_ && wall_rows[r][0] != kept[r][0]) || diag_rows[r][0] != kept[r][0]) {
+      if (short_row || diag_rows[r].size() < 5 || (has_walls && wall_rows[r][0] != kept[r][0]) || diag_rows[r][0] != kept[r][0]) {
         budget_unknown_ = true;
         samples_.clear();
         return;
@@ -115,7 +120,7 @@ class LangevinMomentumSeries : public SeriesObserver<D> {
   std::vector<double> last_;
   double t_;
   double drive_x_;
-  bool has_walls_;  // walls.csv exists (WallForceSeries posts NAME.fx)
+  std::vector<std::size_t> wall_columns_;  // empty: no walls.csv
   std::vector<Sample> samples_;  // one per output instant: a few hundred
   bool budget_unknown_ = false;
 };
