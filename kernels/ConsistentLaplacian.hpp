@@ -126,6 +126,31 @@ struct LaplacianBasis {
     for (int p = 0; p < K; ++p) ab(i, p) = ok ? z[p] : (p < D ? kappa : 0.0);
     return ok;
   }
+  // A sufficient test that s_i(x) lies within [0, s_max] for every x with |x| >= r_min:
+  // s = e.A.e + b.e / |x| (e = x / |x|) lies within [lo - |b| / r_min, hi + |b| / r_min] for
+  // the Gershgorin bounds [lo, hi] on A's eigenvalues, kept off the ends by a margin far
+  // above the evaluation's round-off. When it holds, every pair's evaluated weight is within
+  // the bounds; when not, they must be checked pair by pair
+  template <class View>
+  KOKKOS_INLINE_FUNCTION static bool within_bounds(const View& ab, int i, double r_min, double s_max) {
+    double A[D][D];
+    int p = D;
+    for (int a = 0; a < D; ++a) A[a][a] = ab(i, a);
+    for (int a = 0; a < D; ++a)
+      for (int b = a + 1; b < D; ++b) A[a][b] = A[b][a] = ab(i, p++);
+    double b2 = 0.0;
+    for (int a = 0; a < D; ++a) b2 += ab(i, N + a) * ab(i, N + a);
+    double lo = A[0][0], hi = A[0][0];
+    for (int a = 0; a < D; ++a) {
+      double off = 0.0;
+      for (int b = 0; b < D; ++b)
+        if (b != a) off += kmath::fabs(A[a][b]);
+      lo = kmath::fmin(lo, A[a][a] - off);
+      hi = kmath::fmax(hi, A[a][a] + off);
+    }
+    const double reach = kmath::sqrt(b2) / r_min, margin = 1e-9 * s_max;
+    return lo - reach >= margin && hi + reach <= s_max - margin;  // false on a NaN (r_min = 0)
+  }
   template <class View>
   KOKKOS_INLINE_FUNCTION static void fall_back(double kappa, const View& ab, int i) {
     for (int p = 0; p < K; ++p) ab(i, p) = p < D ? kappa : 0.0;

@@ -54,6 +54,7 @@ struct DensityGradientPass {
     constexpr int K = Basis::K;
     double moments[K][K];  // sum c psi psi^T / r^2 (kernels/ConsistentLaplacian.hpp)
     double shepard = 0.0;
+    double r_min = 1e300;  // the nearest pair or no-slip wall point (the weights' bounds)
     VelocityGradientSum<D> vel;  // Velocity: its G = sum_j w_j (u_j - u_i) (x) grad_i W_ij (M is the pass's own)
     Vec<D> ui;
     if constexpr (Velocity) ui = load<D>(u, i);
@@ -78,6 +79,7 @@ struct DensityGradientPass {
       if constexpr (ConsistentLaplacian) {
         Basis::accumulate(moments, w * (rho_i + rho_j) / rho_i * dWdr / r / (r * r), xij);
         shepard += w * W.value(r);
+        r_min = kmath::fmin(r_min, r);
       }
     });
     Mat<D> B;
@@ -100,6 +102,7 @@ struct DensityGradientPass {
         if (!lap.wall.no_slip(q)) return;
         const double k = 2.0 * lap.wall.s(q) * W.value(r) / fluid_side_dn<D>(xiq, load<D>(lap.wall.n_out, q), lap.min_dn);
         Basis::accumulate(moments, k / (r * r), xiq);
+        r_min = kmath::fmin(r_min, r);
         if (first < 0) first = q;
         else if (norm2(load<D>(lap.wall.u, q) - load<D>(lap.wall.u, first)) > 0.0) smooth_wall_data = false;
       });
@@ -108,9 +111,11 @@ struct DensityGradientPass {
       const double gamma_i = lap.gamma(i);
       if (Basis::solve(moments, shepard >= 0.9 * gamma_i && smooth_wall_data, lap.kappa, gamma_i, lap.weights, i)) {
         // within [0, max_weight kappa] on every pair and no-slip wall point, or the plain
-        // operator (ConsistentLaplacian.hpp)
+        // operator (ConsistentLaplacian.hpp); checked pair by pair only where the bound over
+        // all directions at the nearest distance does not already hold
         const double s_max = LaplacianBasis<D>::max_weight * lap.kappa;
         bool bounded = true;
+        if (Basis::within_bounds(lap.weights, i, r_min, s_max)) return;
         const auto within = [&](const Vec<D>& xr) {
           const double s = Basis::weight(lap.weights, i, xr);
           return s >= 0.0 && s <= s_max;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "scene/CaseFile.hpp"
 #include "reference/References.hpp"
@@ -290,6 +291,52 @@ time: {duration: 1, output_interval: 1})";
       INFO("field " << f << ", R/dx = " << rdx << ": max error " << e);
       CHECK(e < 1e-9);
     }
+}
+
+// The bound over all directions that lets the density-gradient pass skip its pair-by-pair check
+// of the consistent Laplacian's weights (kernels/ConsistentLaplacian.hpp, within_bounds): where it
+// holds, every weight s(x) = (x.A.x + b.x) / |x|^2 at |x| >= r_min lies within [0, s_max]
+// (sampled densely, with the nearest distance itself); it holds for the plain operator's weights
+template <int D>
+static void check_weight_bound() {
+  using Basis = LaplacianBasis<D>;
+  constexpr int K = Basis::K;
+  struct Weights {
+    double v[K];
+    double operator()(int, int p) const { return v[p]; }
+  };
+  std::mt19937_64 rng(17 + D);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  const double s_max = Basis::max_weight;
+  Weights plain{};
+  for (int p = 0; p < D; ++p) plain.v[p] = 1.0;
+  CHECK(Basis::within_bounds(plain, 0, 0.5, s_max));
+  CHECK_FALSE(Basis::within_bounds(plain, 0, 0.0, s_max));  // a coincident point: no bound
+  int held = 0, failed = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    Weights w{};
+    for (int p = 0; p < K; ++p) w.v[p] = p < D ? 1.0 + 0.8 * U(rng) : 0.3 * U(rng);
+    const double r_min = 0.05 + 0.5 * (U(rng) + 1.0);
+    if (!Basis::within_bounds(w, 0, r_min, s_max)) continue;
+    ++held;
+    for (int k = 0; k < 200; ++k) {
+      Vec<D> x;
+      double n2 = 0;
+      for (int a = 0; a < D; ++a) n2 += (x[a] = U(rng)) * x[a];
+      const double r = r_min * (k < 50 ? 1.0 : 1.0 + 3.0 * (U(rng) + 1.0));
+      for (int a = 0; a < D; ++a) x[a] *= r / std::sqrt(n2);
+      const double s = Basis::weight(w, 0, x);
+      if (!(s >= 0.0 && s <= s_max)) ++failed;
+    }
+  }
+  INFO("D = " << D << ": the bound held in " << held << " of 4000 random weight sets");
+  CHECK(held > 400);  // the test is not vacuous
+  CHECK(failed == 0);
+}
+
+TEST_CASE("The consistent Laplacian's bound over all directions holds every pair's weight within bounds", "[nfm][laplacian][unit]") {
+  check_weight_bound<2>();
+  check_weight_bound<3>();
 }
 
 // Regression for the background-pressure correction (2.105) next to NFM walls:

@@ -160,8 +160,8 @@ using LangevinGradientRows = GradientRows<D, field::LangevinGradientX, field::La
 
 // The kernel mean of a vector field f over particle i's support, Shepard-normalised with the
 // particle itself [V&I 17]: sum_j w_j f_j W_ij / sum_j w_j W_ij; with `centroid`, also the
-// support's centroid offset d_i = sum_j w_j (x_j - x_i) W_ij / sum_j w_j W_ij
-template <int D, class Kernel, class Field>
+// support's centroid offset d_i = sum_j w_j (x_j - x_i) W_ij / sum_j w_j W_ij (summed only then)
+template <int D, bool Centroid = false, class Kernel, class Field>
 KOKKOS_INLINE_FUNCTION Vec<D> kernel_mean(const NeighbourList<D>& list, const PeriodicBox<D>& box, const Kernel& W, double R2,
                                           const field_view_t<field::Position, D>& x, const field_view_t<field::Density, D>& rho,
                                           const field_view_t<field::Mass, D>& m, const Field& f, const int i,
@@ -172,11 +172,11 @@ KOKKOS_INLINE_FUNCTION Vec<D> kernel_mean(const NeighbourList<D>& list, const Pe
   for_each_neighbour_within<D>(list, box, x, i, load<D>(x, i), R2, [&](const int j, const Vec<D>& xij, const double r) {
     const double wW = m(j) / rho(j) * W.value(r);
     sum = sum + wW * load<D>(f, j);
-    d = d + (-wW) * xij;
+    if constexpr (Centroid) d = d + (-wW) * xij;
     shepard += wW;
   });
   for (int a = 0; a < D; ++a) sum[a] /= shepard, d[a] /= shepard;
-  if (centroid) *centroid = d;
+  if constexpr (Centroid) *centroid = d;
   return sum;
 }
 
@@ -195,7 +195,7 @@ struct LangevinMean {
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     Vec<D> d;
-    const Vec<D> ut = kernel_mean<D>(list, box, W, R2, x, rho, m, u, i, &d);
+    const Vec<D> ut = kernel_mean<D, true>(list, box, W, R2, x, rho, m, u, i, &d);
     for (int a = 0; a < D; ++a) {
       mean(i, a) = ut[a];
       offset(i, a) = d[a];

@@ -316,7 +316,7 @@ const std::vector<ValidationCase>& catalogue() {
       // 8.2e4 and 3.3e5 particles). Without local time stepping every particle of the refined run
       // takes the D/50 step: about 3.3e4 steps of 2.2e5 particles, a GPU's job (full level only);
       // on a CPU the refined run with local time stepping goes over several sittings
-      // (--variant apr_lts --resume: about 10 h on 2 cores)
+      // (--variant apr_lts --resume: about 5 h on 2 cores)
       {"apr_cylinder_re100_2d", "cases/cylinder_re100_wide_2d.yaml", 0.1,
        {{0.008, true, true, "coarse"}, {0.008, true, true, "apr", "cases/cylinder_re100_apr_2d.yaml"},
         {0.008, true, true, "apr_lts", "cases/cylinder_re100_apr_2d.yaml", {lts}}, {0.004, true, true, "fine"}},
