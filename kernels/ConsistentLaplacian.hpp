@@ -85,7 +85,7 @@ struct LaplacianBasis {
   // plain operator's stiffness; weights up to 3 kappa keep RK4 within its stability limit
   static constexpr double max_weight = 3.0;
   // psi(x): x_a^2 (a < D), then 2 x_a x_b (a < b), then x_a
-  KOKKOS_INLINE_FUNCTION static void psi(const Vec<D>& x, double* f) {
+  KOKKOS_FORCEINLINE_FUNCTION static void psi(const Vec<D>& x, double* f) {
     int p = 0;
     for (int a = 0; a < D; ++a) f[p++] = x[a] * x[a];
     for (int a = 0; a < D; ++a)
@@ -93,7 +93,7 @@ struct LaplacianBasis {
     for (int a = 0; a < D; ++a) f[p++] = x[a];
   }
   // moments += c psi psi^T, its upper triangle (q >= p; solve mirrors it)
-  KOKKOS_INLINE_FUNCTION static void accumulate(double (&moments)[K][K], double c, const Vec<D>& x) {
+  KOKKOS_FORCEINLINE_FUNCTION static void accumulate(double (&moments)[K][K], double c, const Vec<D>& x) {
     double f[K];
     psi(x, f);
     for (int p = 0; p < K; ++p) {
@@ -103,7 +103,7 @@ struct LaplacianBasis {
   }
   // the weight s_i(x) = (x.A_i.x + b_i.x) / |x|^2 of a pair, from the stored (a, b)
   template <class View>
-  KOKKOS_INLINE_FUNCTION static double weight(const View& ab, int i, const Vec<D>& x) {
+  KOKKOS_FORCEINLINE_FUNCTION static double weight(const View& ab, int i, const Vec<D>& x) {
     double f[K];
     psi(x, f);
     double s = 0.0;

@@ -79,7 +79,7 @@ struct DensityGradientPass {
       if constexpr (ConsistentLaplacian) {
         Basis::accumulate(moments, w * (rho_i + rho_j) / rho_i * dWdr / r / (r * r), xij);
         shepard += w * W.value(r);
-        r_min = kmath::fmin(r_min, r);
+        if (r < r_min) r_min = r;
       }
     });
     Mat<D> B;
@@ -102,7 +102,7 @@ struct DensityGradientPass {
         if (!lap.wall.no_slip(q)) return;
         const double k = 2.0 * lap.wall.s(q) * W.value(r) / fluid_side_dn<D>(xiq, load<D>(lap.wall.n_out, q), lap.min_dn);
         Basis::accumulate(moments, k / (r * r), xiq);
-        r_min = kmath::fmin(r_min, r);
+        if (r < r_min) r_min = r;
         if (first < 0) first = q;
         else if (norm2(load<D>(lap.wall.u, q) - load<D>(lap.wall.u, first)) > 0.0) smooth_wall_data = false;
       });
