@@ -321,6 +321,17 @@ const std::vector<ValidationCase>& catalogue() {
        {{0.008, true, true, "coarse"}, {0.008, true, true, "apr", "cases/cylinder_re100_apr_2d.yaml"},
         {0.008, true, true, "apr_lts", "cases/cylinder_re100_apr_2d.yaml", {lts}}, {0.004, true, true, "fine"}},
        cylinder_bounds, cylinder_apr_sets, {}, cylinder_apr_shown},
+      // The channel's blockage at one resolution: apr_cylinder_re100_2d's channel (inlet 8 D upstream,
+      // outlet 17 D downstream) with its slip walls 8 D apart (blockage 12.5 %, cylinder_re100_2d's
+      // width) in place of 20 D (5 %), at D/12.5 over the same 5.5 s; the 20 D run is
+      // apr_cylinder_re100_2d's coarse run
+      {"cylinder_re100_blockage_2d", "cases/cylinder_re100_wide_2d.yaml", 0.1, {{0.008, true}},
+       cylinder_bounds,
+       with(cylinder_apr_sets, {"domain.min=[-0.864,-0.4]", "domain.max=[1.76,0.4]",
+                                "walls.1.points=[[-0.864,-0.4],[1.76,-0.4]]", "walls.2.points=[[-0.864,0.4],[1.76,0.4]]",
+                                "fluid_blocks.0.min=[-0.864,-0.4]", "fluid_blocks.0.max=[0.0,0.4]",
+                                "fluid_blocks.1.min=[0.0,-0.4]", "fluid_blocks.2.max=[1.76,0.4]"}),
+       {}, cylinder_shown},
       // SPHERIC Test 2 with a refinement zone around the box obstacle (cases/spheric_test2_apr_3d.yaml):
       // coarse uniform (dx = 0.06 m), refined (0.03 m in the zone) and fine uniform (0.03 m), to
       // t = 2 s (quick: 0.6 s, the first impact), against the measured series; the APR run's CPU
