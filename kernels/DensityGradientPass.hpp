@@ -114,8 +114,8 @@ struct DensityGradientPass {
         // operator (ConsistentLaplacian.hpp); checked pair by pair only where the bound over
         // all directions at the nearest distance does not already hold
         const double s_max = LaplacianBasis<D>::max_weight * lap.kappa;
-        bool bounded = true;
         if (Basis::within_bounds(lap.weights, i, r_min, s_max)) return;
+        bool bounded = true;
         const auto within = [&](const Vec<D>& xr) {
           const double s = Basis::weight(lap.weights, i, xr);
           return s >= 0.0 && s <= s_max;

@@ -175,8 +175,11 @@ KOKKOS_INLINE_FUNCTION Vec<D> kernel_mean(const NeighbourList<D>& list, const Pe
     if constexpr (Centroid) d = d + (-wW) * xij;
     shepard += wW;
   });
-  for (int a = 0; a < D; ++a) sum[a] /= shepard, d[a] /= shepard;
-  if constexpr (Centroid) *centroid = d;
+  for (int a = 0; a < D; ++a) sum[a] /= shepard;
+  if constexpr (Centroid) {
+    for (int a = 0; a < D; ++a) d[a] /= shepard;
+    *centroid = d;
+  }
   return sum;
 }
 
