@@ -49,6 +49,11 @@ const std::vector<ValidationCase>& catalogue() {
   // the refined cylinder's ladder: 5 shedding periods (0.6 s each at St = 0.167) averaged once the
   // start-up has left the channel (a flow-through takes 2.5 s)
   static const std::vector<std::string> cylinder_apr_sets = {"time.duration=5.5", "reference.from=2.5"};
+  // the refined cylinder's goal, fixed before its run: C_D and St within 3 %, the lift amplitude
+  // within 10 % of the published means (the coarse run, which does not resolve the boundary layer,
+  // is marked failed against it); the whole shedding periods after 2.5 s are shown (5 at St >= 0.167)
+  static const std::map<std::string, double> cylinder_apr_bounds =
+      stable({{"cd_error", 0.03}, {"cl_amplitude_error", 0.1}, {"strouhal_error", 0.03}, {"open_mass_balance", 1e-12}});
   static const std::vector<std::string> cylinder_shown = {"cd_mean", "cd_pressure_mean", "cd_viscous_mean", "cl_amplitude", "strouhal",
                                                           "shedding_periods"};
   // the same, with the refined run's cost and limiter
@@ -316,11 +321,11 @@ const std::vector<ValidationCase>& catalogue() {
       // 8.2e4 and 3.3e5 particles). Without local time stepping every particle of the refined run
       // takes the D/50 step: about 3.3e4 steps of 2.2e5 particles, a GPU's job (full level only);
       // on a CPU the refined run with local time stepping goes over several sittings
-      // (--variant apr_lts --resume: about 5 h on 2 cores)
+      // (--variant apr_lts --resume: about 4 h on 2 cores; perf/README.md)
       {"apr_cylinder_re100_2d", "cases/cylinder_re100_wide_2d.yaml", 0.1,
        {{0.008, true, true, "coarse"}, {0.008, true, true, "apr", "cases/cylinder_re100_apr_2d.yaml"},
         {0.008, true, true, "apr_lts", "cases/cylinder_re100_apr_2d.yaml", {lts}}, {0.004, true, true, "fine"}},
-       cylinder_bounds, cylinder_apr_sets, {}, cylinder_apr_shown},
+       cylinder_apr_bounds, cylinder_apr_sets, {}, cylinder_apr_shown},
       // The channel's blockage at one resolution: apr_cylinder_re100_2d's channel (inlet 8 D upstream,
       // outlet 17 D downstream) with its slip walls 8 D apart (blockage 12.5 %, cylinder_re100_2d's
       // width) in place of 20 D (5 %), at D/12.5 over the same 5.5 s; the 20 D run is
