@@ -70,6 +70,12 @@ const std::vector<ValidationCase>& catalogue() {
   // the refined column's zones (cases/wedge_impact_apr_2d.yaml: three levels, s/dx = 80 at the
   // wall) cut to two (40) or taken to four (160)
   static const std::string wedge_two_levels = "refinement.zones.0.zones.0={name: wall, min: [-0.5, -0.5], max: [1.5, 12.5]}";
+  // the thesis' 50 m x 30 m block (cases/wedge_impact_2d.yaml's is 20 m x 15 m), the domain and the
+  // wall extended with it: the wall's impulse up to s, C_F rho U s^2 / 2 per metre (C_F = 112.8, the
+  // similarity solution's force), slows a block of area A by C_F s^2 / (2 A) of U: at s = 1 m 20 %
+  // for 20 x 15 m and 4 % for 50 x 30 m
+  static const std::vector<std::string> wedge_thesis_block = {"domain.max=[51.0,55.0]", "walls.0.points=[[0.0,55.0],[0.0,0.0],[51.0,0.0]]",
+                                                              "fluid_blocks.0.max=[50.05,30.0]"};
   static const std::string wedge_four_levels =
       "refinement.zones.0.zones.0.zones.0={name: root, min: [-0.5, -0.5], max: [0.75, 12.0],"
       " zones: [{name: tip, min: [-0.5, -0.5], max: [0.4, 11.5]}]}";
@@ -374,6 +380,11 @@ const std::vector<ValidationCase>& catalogue() {
        {{0.1, false, true, "coarse"}, {0.1, false, true, "apr_s40", "cases/wedge_impact_apr_2d.yaml", {wedge_two_levels}}},
        stable({{"wall_crossings", 0.5}}), {"time.snapshot_every=1000000"}, {}, wedge_shown,
        {"reference.length=0.5", "time.duration=0.11"}},
+      // impact_wedge_apr_2d's two levels (s/dx = 40 at the wall) in the thesis' block (above). Full
+      // level only (1.7e5 particles at the start, about 50 min here). Shown, not bounded
+      {"impact_wedge_apr_2d_thesis_block", "cases/wedge_impact_2d.yaml", 1.0,
+       {{0.1, true, true, "apr_s40", "cases/wedge_impact_apr_2d.yaml", {wedge_two_levels}}},
+       stable({{"wall_crossings", 0.5}}), with({"time.snapshot_every=1000000"}, wedge_thesis_block), {}, wedge_shown},
       // Open boundaries (`--case open`). The cylinder at Re = 100 (cases/cylinder_re100_2d.yaml), C_D,
       // the lift amplitude and St from the whole lift periods after 2.5 s of a 4.5 s run, against the
       // literature's means (src/reference/ForceCoefficients.hpp). Resolution: particles per diameter.
