@@ -381,7 +381,7 @@ const std::vector<ValidationCase>& catalogue() {
        stable({{"wall_crossings", 0.5}}), {"time.snapshot_every=1000000"}, {}, wedge_shown,
        {"reference.length=0.5", "time.duration=0.11"}},
       // impact_wedge_apr_2d's two levels (s/dx = 40 at the wall) in the thesis' block (above). Full
-      // level only (1.7e5 particles at the start, about 50 min here). Shown, not bounded
+      // level only (1.7e5 particles at the start, about 17 minutes here). Shown, not bounded
       {"impact_wedge_apr_2d_thesis_block", "cases/wedge_impact_2d.yaml", 1.0,
        {{0.1, true, true, "apr_s40", "cases/wedge_impact_apr_2d.yaml", {wedge_two_levels}}},
        stable({{"wall_crossings", 0.5}}), with({"time.snapshot_every=1000000"}, wedge_thesis_block), {}, wedge_shown},
