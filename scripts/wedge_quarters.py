@@ -39,7 +39,10 @@ def main(argv):
         rows = list(csv.DictReader(open(path)))
     except OSError as e:
         sys.exit(f"wedge_quarters.py: cannot read {path}: {e.strerror}")
-    names = [k for k in rows[0] if k.endswith(".pressure")]
+    names = [k for k in rows[0] if k.endswith(".pressure")] if rows else []
+    if not names or "time" not in rows[0]:
+        sys.exit(f"wedge_quarters.py: {path}: expected a header with `time` and the faces' `NAME.pressure` columns, "
+                 "and at least one row (an `ondine run` output's wall_sensors.csv)")
     q = rho * U * U
 
     def ref_mean(a, b):  # the profile's mean over [a, b] in eta, zero beyond its end

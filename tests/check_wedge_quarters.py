@@ -2,7 +2,7 @@
 """scripts/wedge_quarters.py on a synthetic wall_sensors.csv: every face reads f(s) times the
 similarity profile's mean over its span (integrated here on a 20 times finer grid), f(s) = 0.5 + s,
 so each quarter's peak and floor ratios are the mean of f over that quarter's instants; instants
-outside s = 0.5-1 m read 1e9 and must be left out. A missing folder is refused, naming the file.
+outside s = 0.5-1 m read 1e9 and must be left out. A missing folder and an empty file are refused, naming the file.
 
 usage: check_wedge_quarters.py SCRIPT WORKDIR"""
 import os
@@ -59,6 +59,12 @@ for q, line in enumerate(lines[2:6]):
 missing = subprocess.run([sys.executable, script, os.path.join(work, "no_such_run")], capture_output=True, text=True)
 if missing.returncode == 0 or "no_such_run/wall_sensors.csv" not in missing.stderr:
     bad.append(f"a missing folder: exit {missing.returncode}, {missing.stderr.strip()!r}")
+empty = os.path.join(work, "wedge_quarters_empty")
+os.makedirs(empty, exist_ok=True)
+open(os.path.join(empty, "wall_sensors.csv"), "w").close()
+refused = subprocess.run([sys.executable, script, empty], capture_output=True, text=True)
+if refused.returncode == 0 or "wedge_quarters_empty/wall_sensors.csv: expected a header" not in refused.stderr:
+    bad.append(f"an empty wall_sensors.csv: exit {refused.returncode}, {refused.stderr.strip()!r}")
 if bad:
     sys.exit("check_wedge_quarters:\n" + "\n".join(bad))
 print("check_wedge_quarters: the window's and each quarter's ratios are f(s)'s means")
