@@ -8,7 +8,8 @@ open boundaries whose state a restart must carry):
     every figure equal to the uninterrupted run's within round-off (the checkpoint rebuilds the
     neighbour lists at another step than the reference, so not bitwise), the same step count,
     and wall/CPU seconds the sum over the two processes;
- 4. --resume once more: nothing run, the same record;
+ 4. --resume once more: nothing run, the same record, each rung's commit the one that ran it
+    (validate_rung.json), not the report writer's;
  5. refusals (exit status 2, the file named): other overrides than the folder's, and a folder
     not written by --resume.
 usage: check_validate_resume.py ONDINE OUT"""
@@ -92,11 +93,20 @@ if abs(b[rung]["wall_seconds"] - total) > 1e-9 or b[rung]["cpu_seconds"] < first
     fail(f"the record's wall/CPU seconds ({b[rung]['wall_seconds']}, {b[rung]['cpu_seconds']}) are not the totals")
 print(f"resumed: figures within {worst:.2g} of the uninterrupted run's, steps equal, wall {total:.1f} s over two processes")
 
-# 4. nothing left to run
+if len(b[rung].get("commits", [])) != 2:
+    fail(f"the resumed rung's record lists commits {b[rung].get('commits')}, expected the two processes'")
+
+# 4. nothing left to run; the record names the commit that ran each rung, not the one writing it
+ident = f"{out}/B/open_channel_2d/res_10/validate_rung.json"
+j = json.load(open(ident))
+j["commits"] = ["0000000"]  # as if an older binary had run it
+json.dump(j, open(ident, "w"))
 rc, err = validate("B", "--resume")
 c = runs("B")
 if rc != 0 or err.count("taken as it is") != 2 or any(c[d]["errors"] != b[d]["errors"] for d in b):
     fail(f"a second --resume: exit status {rc}, {err}")
+if c["open_channel_2d/res_10"]["commit"] != "0000000":
+    fail(f"a rung taken as it is: the record's commit {c['open_channel_2d/res_10']['commit']}, not the one that ran it")
 
 # 5. refusals
 rc, err = validate("B", "--resume", "--flux", "riemann")

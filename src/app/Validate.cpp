@@ -273,7 +273,10 @@ std::map<std::string, double> run_rung(const ValidateOptions& opt, const Validat
   run["flux"] = opt.flux;
   run["transport"] = opt.transport;
   run["scheme"] = {{"flux", scale.flux}, {"transport", scale.transport}};
-  run["commit"] = report.commit;
+  // the commit of the binary that ran the rung (its last one, when --resume took it as it was or went on
+  // from a checkpoint), not the one writing the report
+  const std::vector<std::string> rung_commits = validate::rung_commits(opt.out_dir + "/" + rel);
+  run["commit"] = rung_commits.empty() ? report.commit : rung_commits.back();
   run["date"] = report.date;
   run["threads"] = report.threads;
   run["device"] = report.device;
@@ -290,7 +293,7 @@ std::map<std::string, double> run_rung(const ValidateOptions& opt, const Validat
   run["errors"] = rep.errors;
   run["status"] = rep.status;
   // a run made by several validations (--resume): the commits of each
-  if (const std::vector<std::string> commits = validate::rung_commits(opt.out_dir + "/" + rel); commits.size() > 1) run["commits"] = commits;
+  if (rung_commits.size() > 1) run["commits"] = rung_commits;
   // with refinement zones: each level's SPH particles x steps, and with local time stepping each level's steps
   {
     std::ifstream in(opt.out_dir + "/" + rel + "/summary.json");
