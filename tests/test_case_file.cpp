@@ -218,6 +218,36 @@ time: {duration: 1, output_interval: 1}
   CHECK_THROWS_WITH(ondine::parse_case(y, "wall.yaml"), Catch::Contains("key 'walls[0].points': a wall must lie within the domain along the periodic axis x"));
 }
 
+TEST_CASE("A 2D wall that meets itself is refused, naming the segments", "[case]") {
+  const std::string y = R"(dimension: 2
+domain: {min: [-0.1, -0.1], max: [1.1, 1.1]}
+fluid: {rho0: 1000, sound_speed: 10}
+discretisation: {dx: 0.04}
+walls: [{name: tank, points: POINTS, closed: CLOSED, fluid_side: SIDE}]
+fluid_blocks: [{min: [0, 0], max: [0.4, 0.4]}]
+time: {duration: 1, output_interval: 1}
+)";
+  auto error = [&](const std::string& points, bool closed) {
+    try {
+      parse_case(replace(replace(replace(y, "POINTS", points), "CLOSED", closed ? "true" : "false"), "SIDE", closed ? "inside" : "left"), "w.yaml");
+    } catch (const CaseError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  // a bow tie: its first and third segments cross
+  CHECK_THAT(error("[[0, 0], [1, 1], [1, 0], [0, 1]]", true), Contains("w.yaml:5:") && Contains("key 'walls[0].points': segments 0 and 2 (0-based) meet"));
+  // a vertex on a segment that is not its neighbour
+  CHECK_THAT(error("[[0, 0], [1, 0], [1, 1], [0.5, 0], [0, 0.5]]", true), Contains("segments 0 and 2 (0-based) meet"));
+  // an open and a closed wall folding back onto themselves
+  CHECK_THAT(error("[[0, 0.5], [1, 0.5], [0.5, 0.5]]", false), Contains("segments 0 and 1 fold back onto each other at point 1"));
+  CHECK_THAT(error("[[0, 0], [1, 0], [0.5, 0], [0.5, 1]]", true), Contains("segments 0 and 1 fold back onto each other at point 1"));
+  // simple polylines pass: a square, an L, an open floor with a wall
+  CHECK(error("[[0, 0], [1, 0], [1, 1], [0, 1]]", true).empty());
+  CHECK(error("[[0, 0], [1, 0], [1, 0.5], [0.5, 0.5], [0.5, 1], [0, 1]]", true).empty());
+  CHECK(error("[[0, 1], [0, 0], [1, 0]]", false).empty());
+}
+
 TEST_CASE("Every shipped case file selects a built flux scheme, and another is refused naming its keys", "[unit][case]") {
   namespace fs = std::filesystem;
   int n = 0;

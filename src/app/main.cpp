@@ -11,7 +11,9 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
+#include <system_error>
 
 #include "run/BuildInfo.hpp"
 #include "app/KernelProfile.hpp"
@@ -85,8 +87,8 @@ int run_app(int argc, char** argv, int ranks, int rank, const std::string& no_de
                      "their checkpoints; every rung writes a checkpoint every 10 wall minutes. A folder holding a run of other "
                      "settings is refused");
   validate->add_option("--variant", vopt.variants,
-                       "run only this rung of an APR ladder (coarse, apr, apr_lts, fine; repeatable); the others are left out of the "
-                       "report");
+                       "run only this rung of a ladder (its folder's name: coarse, apr, apr_lts, fine, apr_s40, ...; repeatable); the "
+                       "others are left out of the report");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -122,7 +124,18 @@ int run_app(int argc, char** argv, int ranks, int rank, const std::string& no_de
     return 2;
   }
   ondine::RunOptions opt;
+  if (run->get_option("--out")->count() > 0 && out_dir.empty()) {
+    if (rank == 0) std::fprintf(stderr, "ondine: error: --out: expected a folder, got an empty name\n");
+    return 2;
+  }
   opt.out_dir = out_dir.empty() ? "out/" + scene.name : out_dir;
+  {
+    std::error_code ec;  // a file in the output folder's place, before anything is said (the runner creates the folder)
+    if (std::filesystem::exists(opt.out_dir, ec) && !std::filesystem::is_directory(opt.out_dir, ec)) {
+      if (rank == 0) std::fprintf(stderr, "ondine: error: --out %s: a file of that name exists; expected a folder\n", opt.out_dir.c_str());
+      return 2;
+    }
+  }
   opt.progress = !quiet && rank == 0;
   opt.restart = restart;
   if (rank == 0)
@@ -194,7 +207,22 @@ int main(int argc, char** argv) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   int rc = 0;
   const std::string no_device = cuda_device_problem();
-  if (no_device.empty()) Kokkos::initialize(argc, argv);
+  if (no_device.empty()) {
+    try {
+      Kokkos::initialize(argc, argv);
+    } catch (const std::exception& e) {  // a --kokkos-* option it cannot read
+      std::string given;
+      for (int k = 1; k < argc; ++k)
+        if (std::string(argv[k]).rfind("--kokkos", 0) == 0 || std::string(argv[k]).rfind("--threads", 0) == 0 ||
+            std::string(argv[k]).rfind("--num", 0) == 0 || std::string(argv[k]).rfind("--device", 0) == 0)
+          given += std::string(given.empty() ? "" : " ") + argv[k];
+      if (rank == 0)
+        std::fprintf(stderr, "ondine: error: the Kokkos option%s %s cannot be used (%s); expected the forms `ondine --help` lists\n",
+                     given.find(' ') != std::string::npos ? "s" : "", given.empty() ? "given" : given.c_str(), e.what());
+      MPI_Finalize();
+      return 2;
+    }
+  }
   try {
     rc = run_app(argc, argv, ranks, rank, no_device);
   } catch (const std::exception& e) {

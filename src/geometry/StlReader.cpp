@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <vector>
@@ -12,6 +13,7 @@
 namespace ondine::geometry {
 
 TriangleMesh read_stl(const std::string& file) {
+  if (std::filesystem::is_directory(file)) throw GeometryError("'" + file + "' is a folder; expected a binary or ASCII STL file");
   std::ifstream in(file, std::ios::binary);
   if (!in) throw GeometryError("cannot open '" + file + "'");
   const std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

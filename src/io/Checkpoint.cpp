@@ -26,6 +26,8 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, std::i
   f.attribute("run_wall_seconds", h.run_wall_seconds);
   f.attribute("run_cpu_seconds", h.run_cpu_seconds);
   f.attribute("initial_particles", h.initial_particles);
+  f.attribute("rho0", h.rho0);
+  f.attribute("domain", h.domain);
   std::vector<std::string> names = checkpoint_fields();
   if (h.refinement.present) {
     const CheckpointRefinement& a = h.refinement;
@@ -92,6 +94,8 @@ CheckpointSlice read_checkpoint(const std::string& path, const Communicator& com
     h.run_wall_seconds = r.has("run_wall_seconds") ? r.attribute_double("run_wall_seconds") : 0;
     h.run_cpu_seconds = r.has("run_cpu_seconds") ? r.attribute_double("run_cpu_seconds") : 0;
     h.initial_particles = r.has("initial_particles") ? r.attribute_int("initial_particles") : 0;
+    h.rho0 = r.has("rho0") ? r.attribute_double("rho0") : 0;
+    if (r.has("domain")) h.domain = r.attribute_doubles("domain");
     for (const std::string& label : optional_checkpoint_fields())
       if (r.has(("checksum_" + label).c_str())) h.field_checksums[label] = r.attribute_u64(("checksum_" + label).c_str());
     if (r.has("checksum_open_role")) h.field_checksums["open_role"] = r.attribute_u64("checksum_open_role");

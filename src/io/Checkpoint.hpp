@@ -69,6 +69,10 @@ struct CheckpointHeader {
   // rank's wall seconds, rank 0's CPU seconds); 0 in a checkpoint written before they were recorded
   double run_wall_seconds = 0, run_cpu_seconds = 0;
   std::int64_t initial_particles = 0;  // all ranks at t = 0 (open boundaries and refinement change the count); 0: not recorded
+  // the case's rho0 and domain box (min then max, 3 each), so that a restart with another case is
+  // refused; rho0 0 and no box: a checkpoint written before they were recorded
+  double rho0 = 0;
+  std::vector<double> domain;
   CheckpointRefinement refinement;
   CheckpointOpen open;
 };

@@ -1,5 +1,6 @@
 #include "io/H5Collective.hpp"
 
+#include <cerrno>
 #include <cstdio>
 #include <stdexcept>
 
@@ -67,10 +68,16 @@ H5CollectiveFile::H5CollectiveFile(std::string path, const Communicator& comm, s
     : path_(std::move(path)), tmp_(temporary_name(path_)), comm_(comm), local_(local_rows) {
   offset_ = comm.exclusive_scan(local_rows);
   global_ = comm.sum(local_rows);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become the messages below, with the system's reason
   const hid_t fapl = access_list(comm);
+  errno = 0;
   file_ = H5Fcreate(tmp_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
+  const int e = errno;
   H5Pclose(fapl);
-  if (file_ < 0) throw std::runtime_error("HDF5: cannot create " + tmp_);
+  if (file_ < 0) {
+    if (comm_.rank() == 0) std::remove(tmp_.c_str());
+    throw std::runtime_error("cannot write " + path_ + " (HDF5 cannot create " + tmp_ + ")" + system_reason(e));
+  }
 }
 
 H5CollectiveFile::~H5CollectiveFile() {
@@ -107,20 +114,26 @@ void H5CollectiveFile::dataset(const std::string& name, const std::vector<double
   const hid_t set = H5Dcreate2(file_, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   if (set < 0) throw std::runtime_error("HDF5: cannot create dataset " + name);
   herr_t st;
+  errno = 0;
   {
     const RowSelection sel(space, offset_, local_, components);
     const hid_t dxpl = transfer_list(comm_);
     st = H5Dwrite(set, H5T_NATIVE_DOUBLE, sel.mem, space, dxpl, rows.empty() ? nullptr : rows.data());
     H5Pclose(dxpl);
   }
-  H5Dclose(set);
+  // the data may reach the file only when the dataset is closed (a full disk fails here)
+  if (H5Dclose(set) < 0) st = -1;
+  const int e = errno;
   H5Sclose(space);
-  check(st, "writing dataset " + name);
+  if (st < 0) throw std::runtime_error("cannot write " + path_ + " (HDF5 dataset " + name + ")" + system_reason(e));
 }
 
 void H5CollectiveFile::commit() {
-  check(H5Fclose(file_), "closing " + tmp_);
-  file_ = -1;
+  errno = 0;
+  const herr_t st = H5Fclose(file_);
+  const int e = errno;
+  file_ = -1;  // closed or not, never closed again: the destructor removes the temporary
+  if (st < 0) throw std::runtime_error("cannot write " + path_ + " (HDF5 closing " + tmp_ + ")" + system_reason(e));
   comm_.barrier();  // every rank's data is in the file
   if (comm_.rank() == 0) commit_file(tmp_, path_);
   comm_.barrier();  // the file is under its name for everyone

@@ -38,10 +38,11 @@ class SnapshotWriter {
 
   const std::vector<SnapshotEntry>& entries() const { return entries_; }
   std::string index_path() const;
+  // the snapshot numbered `index`: <case>_NNNNNN.h5
+  std::string file_name(std::size_t index) const;
 
  private:
   void write_index() const;
-  std::string file_name(std::size_t index) const;
   std::string dir_, name_;
   Communicator comm_;
   std::vector<SnapshotEntry> entries_;

@@ -1,6 +1,7 @@
 #include "io/XdmfSeries.hpp"
 
 #include <filesystem>
+#include <stdexcept>
 #include <iomanip>
 #include <sstream>
 
@@ -39,7 +40,9 @@ void remove_numbered_files(const std::string& dir, const std::string& prefix, st
     if (f.size() != prefix.size() + 9 || f.compare(0, prefix.size(), prefix) != 0 || f.compare(f.size() - 3, 3, ".h5") != 0) continue;
     const std::string digits = f.substr(prefix.size(), 6);
     if (digits.find_first_not_of("0123456789") != std::string::npos) continue;
-    if (std::stoul(digits) >= first) fs::remove(e.path());
+    std::error_code ec;
+    if (std::stoul(digits) >= first && !fs::remove(e.path(), ec) && ec)
+      throw std::runtime_error("cannot remove " + e.path().string() + ", a snapshot of an earlier run in the output folder: " + ec.message());
   }
 }
 

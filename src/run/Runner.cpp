@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -14,6 +15,7 @@
 #include "run/BuildInfo.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/Checkpoint.hpp"
+#include "io/SnapshotWriter.hpp"
 #include "run/RunRecorder.hpp"
 #include "run/RunRestart.hpp"
 #include "solver/Simulation.hpp"
@@ -68,6 +70,9 @@ class Checkpointer {
     h.run_wall_seconds = comm_.max(cost.first);
     h.run_cpu_seconds = cost.second;
     h.initial_particles = static_cast<std::int64_t>(initial_particles);
+    h.rho0 = scene_.rho0;
+    h.domain = {scene_.domain.min[0], scene_.domain.min[1], scene_.domain.min[2],
+                scene_.domain.max[0], scene_.domain.max[1], scene_.domain.max[2]};
     sim.save_hooks(h);  // the impermeability guard's count, the open boundaries' state
     if (sim.refinement_on()) {
       h.refinement = refinement_state(sim);
@@ -138,7 +143,30 @@ CheckpointSlice read_restart(const Scene& scene, const RunOptions& opt, const Co
   if (h.dimension != D || std::abs(h.dx - scene.dx) > 1e-12 * scene.dx)
     throw CheckpointError(opt.restart + ": written by a " + std::to_string(h.dimension) + "D run with dx = " + std::to_string(h.dx) +
                           " m; the case has dimension " + std::to_string(D) + " and dx = " + std::to_string(scene.dx) + " m");
+  if (!h.case_name.empty() && h.case_name != scene.name)
+    throw CheckpointError(opt.restart + ": written by the case named '" + h.case_name + "'; the case " + scene.source_file + " is named '" +
+                          scene.name + "' (key 'name'); restart it with the case that wrote it (name: " + h.case_name + ")");
+  if (h.rho0 > 0 && std::abs(h.rho0 - scene.rho0) > 1e-12 * scene.rho0)
+    throw CheckpointError(opt.restart + ": written with fluid.rho0 = " + std::to_string(h.rho0) + " kg/m^3; the case " + scene.source_file +
+                          " has " + std::to_string(scene.rho0) + " (key 'fluid.rho0'); restart it with the case that wrote it");
+  if (h.domain.size() == 6) {
+    double scale = 0;
+    for (int k = 0; k < D; ++k) scale = std::max(scale, scene.domain.max[k] - scene.domain.min[k]);
+    for (int k = 0; k < D; ++k)
+      if (std::abs(h.domain[k] - scene.domain.min[k]) > 1e-12 * scale || std::abs(h.domain[3 + k] - scene.domain.max[k]) > 1e-12 * scale)
+        throw CheckpointError(opt.restart + ": written with another domain box (axis " + std::to_string(k) + ": " + std::to_string(h.domain[k]) +
+                              " to " + std::to_string(h.domain[3 + k]) + " m) than the case " + scene.source_file + " (" +
+                              std::to_string(scene.domain.min[k]) + " to " + std::to_string(scene.domain.max[k]) +
+                              " m, key 'domain'); restart it with the case that wrote it");
+  }
   check_refinement_restart(scene, h, opt.restart);
+  // the run's snapshot series goes on in its folder: the snapshots written before the checkpoint must be there
+  for (std::int64_t k = 0; k < h.snapshots; ++k) {
+    const std::string snap = opt.out_dir + "/" + SnapshotWriter(opt.out_dir, scene.name).file_name(static_cast<std::size_t>(k));
+    if (!std::filesystem::exists(snap))
+      throw CheckpointError(opt.restart + ": the run that wrote it had " + std::to_string(h.snapshots) + " snapshots, and " + snap +
+                            " is missing: a restart continues that run's series in its own folder; give --out the folder that holds them");
+  }
   return restart;
 }
 
@@ -272,8 +300,12 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
     timing.cpu_before = restart.header.run_cpu_seconds;
   }
   Simulation<D> sim = start_simulation<D>(scene, opt, restarting ? &restart : nullptr);
-  if (root) std::filesystem::create_directories(opt.out_dir);
-  comm.barrier();
+  {
+    std::error_code ec;  // rank 0 creates it; every rank stops when it could not
+    if (root) std::filesystem::create_directories(opt.out_dir, ec);
+    if (comm.sum(std::int64_t(ec ? 1 : 0)) > 0)
+      throw std::runtime_error("cannot create the output folder " + opt.out_dir + " (--out)" + (root ? ": " + ec.message() : std::string()));
+  }
   RunRecorder<D> recorder(scene, opt.out_dir, comm, sim);
   Checkpointer<D> checkpoints(scene, opt, comm);
   const double t_start = sim.time();

@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -70,6 +71,7 @@ Scene parse_case(const std::string& text, const std::string& path, const std::ve
 }
 
 Scene load_case(const std::string& path, const std::vector<std::string>& overrides) {
+  if (std::filesystem::is_directory(path)) throw CaseError(path + ": is a folder; expected a YAML case file");
   std::ifstream in(path);
   if (!in) throw CaseError(path + ": cannot open the case file");
   std::stringstream ss;

@@ -1,4 +1,7 @@
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -12,6 +15,7 @@ namespace {
 void read_wall_file(const Reader& r, const YAML::Node& f, const std::string& key, const std::string& path, Wall& wall) {
   const std::string rel = r.text(f, key + ".file", "a CSV file of x, y lines");
   const std::string file = beside_case_file(path, rel);
+  if (std::filesystem::is_directory(file)) r.fail(f, key + ".file", "'" + file + "' is a folder; expected a CSV file of x, y lines");
   std::ifstream in(file);
   if (!in) r.fail(f, key + ".file", "cannot open '" + file + "'");
   std::string line;
@@ -67,6 +71,51 @@ void read_wall_points(const Reader& r, const YAML::Node& w, const std::string& k
 }
 
 // enough points, no zero-length segment, within one period along a periodic axis
+// Two segments of one polyline that are not neighbours must not meet (cross, touch or overlap),
+// and neighbours must not fold back onto each other: the side test and the Shepard factor need a
+// simple curve. Pairs whose bounding boxes are apart are skipped.
+void check_no_self_intersection(const Reader& r, const YAML::Node& w, const std::string& key, const Wall& wall, std::size_t nseg) {
+  using P = std::array<double, 2>;
+  const std::size_t n = wall.points.size();
+  auto pt = [&](std::size_t k) -> const P& { return wall.points[k % n]; };
+  auto cross = [](const P& o, const P& a, const P& b) { return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]); };
+  double extent = 0;
+  for (const P& q : wall.points) extent = std::max({extent, std::abs(q[0] - pt(0)[0]), std::abs(q[1] - pt(0)[1])});
+  const double eps = 1e-12 * extent * extent;  // an area: the orientation test's round-off
+  auto on_segment = [&](const P& a, const P& b, const P& q) {
+    return std::abs(cross(a, b, q)) <= eps && std::min(a[0], b[0]) - 1e-12 * extent <= q[0] && q[0] <= std::max(a[0], b[0]) + 1e-12 * extent &&
+           std::min(a[1], b[1]) - 1e-12 * extent <= q[1] && q[1] <= std::max(a[1], b[1]) + 1e-12 * extent;
+  };
+  auto meet = [&](const P& a, const P& b, const P& c, const P& d) {
+    const double d1 = cross(c, d, a), d2 = cross(c, d, b), d3 = cross(a, b, c), d4 = cross(a, b, d);
+    if (((d1 > eps && d2 < -eps) || (d1 < -eps && d2 > eps)) && ((d3 > eps && d4 < -eps) || (d3 < -eps && d4 > eps))) return true;
+    return on_segment(c, d, a) || on_segment(c, d, b) || on_segment(a, b, c) || on_segment(a, b, d);
+  };
+  const YAML::Node at = w["points"] ? w["points"] : w;
+  for (std::size_t i = 0; i < nseg; ++i) {
+    const P &a = pt(i), &b = pt(i + 1);
+    // the next segment folding back along this one
+    if (wall.closed || i + 1 < nseg) {
+      const P& c = pt(i + 2);
+      const double dot = (a[0] - b[0]) * (c[0] - b[0]) + (a[1] - b[1]) * (c[1] - b[1]);
+      if (std::abs(cross(b, a, c)) <= eps && dot > 0)
+        r.fail(at, key + ".points", "segments " + std::to_string(i) + " and " + std::to_string((i + 1) % nseg) +
+                                        " fold back onto each other at point " + std::to_string((i + 1) % n) + "; expected a wall that does not meet itself");
+    }
+    const double xlo = std::min(a[0], b[0]), xhi = std::max(a[0], b[0]), ylo = std::min(a[1], b[1]), yhi = std::max(a[1], b[1]);
+    for (std::size_t j = i + 2; j < nseg; ++j) {
+      if (wall.closed && i == 0 && j == nseg - 1) continue;  // neighbours through the closing point
+      const P &c = pt(j), &d = pt(j + 1);
+      if (std::max(c[0], d[0]) < xlo - 1e-12 * extent || std::min(c[0], d[0]) > xhi + 1e-12 * extent ||
+          std::max(c[1], d[1]) < ylo - 1e-12 * extent || std::min(c[1], d[1]) > yhi + 1e-12 * extent)
+        continue;
+      if (meet(a, b, c, d))
+        r.fail(at, key + ".points", "segments " + std::to_string(i) + " and " + std::to_string(j) +
+                                        " (0-based) meet; expected a wall that does not meet itself (a simple polyline)");
+    }
+  }
+}
+
 void check_wall_shape(const Reader& r, const YAML::Node& w, const std::string& key, const Scene& s, const Wall& wall) {
   const std::size_t need = wall.closed ? 3 : 2;
   if (wall.points.size() < need)
@@ -78,6 +127,7 @@ void check_wall_shape(const Reader& r, const YAML::Node& w, const std::string& k
     if (std::hypot(b[0] - a[0], b[1] - a[1]) < 1e-9 * s.dx)
       r.fail(w["points"] ? w["points"] : w, key + ".points", "segment " + std::to_string(k) + " has zero length (repeated point)");
   }
+  check_no_self_intersection(r, w, key, wall, nseg);
   // along a periodic axis the wall's images one period away are added, so the wall
   // itself must lie within one period: a wall across the axis spans exactly one
   for (int k = 0; k < 2; ++k) {
