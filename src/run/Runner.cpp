@@ -135,14 +135,10 @@ Simulation<D> start_simulation(const Scene& scene, const RunOptions& opt, const 
   return sim;
 }
 
-// The checkpoint to restart from, checked against the case.
-template <int D>
-CheckpointSlice read_restart(const Scene& scene, const RunOptions& opt, const Communicator& comm) {
-  CheckpointSlice restart = read_checkpoint(opt.restart, comm);
-  const CheckpointHeader& h = restart.header;
-  if (h.dimension != D || std::abs(h.dx - scene.dx) > 1e-12 * scene.dx)
-    throw CheckpointError(opt.restart + ": written by a " + std::to_string(h.dimension) + "D run with dx = " + std::to_string(h.dx) +
-                          " m; the case has dimension " + std::to_string(D) + " and dx = " + std::to_string(scene.dx) + " m");
+// After the checkpoint's state is read and checked: the case is the one that wrote it (name, rho0,
+// domain), and the output folder holds that run's snapshots, which the series continues.
+static void check_restart_case(const Scene& scene, const RunOptions& opt, const CheckpointHeader& h) {
+  const int D = scene.dimension;
   if (!h.case_name.empty() && h.case_name != scene.name)
     throw CheckpointError(opt.restart + ": written by the case named '" + h.case_name + "'; the case " + scene.source_file + " is named '" +
                           scene.name + "' (key 'name'); restart it with the case that wrote it (name: " + h.case_name + ")");
@@ -159,7 +155,6 @@ CheckpointSlice read_restart(const Scene& scene, const RunOptions& opt, const Co
                               std::to_string(scene.domain.min[k]) + " to " + std::to_string(scene.domain.max[k]) +
                               " m, key 'domain'); restart it with the case that wrote it");
   }
-  check_refinement_restart(scene, h, opt.restart);
   // the run's snapshot series goes on in its folder: the snapshots written before the checkpoint must be there
   for (std::int64_t k = 0; k < h.snapshots; ++k) {
     const std::string snap = opt.out_dir + "/" + SnapshotWriter(opt.out_dir, scene.name).file_name(static_cast<std::size_t>(k));
@@ -167,6 +162,17 @@ CheckpointSlice read_restart(const Scene& scene, const RunOptions& opt, const Co
       throw CheckpointError(opt.restart + ": the run that wrote it had " + std::to_string(h.snapshots) + " snapshots, and " + snap +
                             " is missing: a restart continues that run's series in its own folder; give --out the folder that holds them");
   }
+}
+
+// The checkpoint to restart from, checked against the case.
+template <int D>
+CheckpointSlice read_restart(const Scene& scene, const RunOptions& opt, const Communicator& comm) {
+  CheckpointSlice restart = read_checkpoint(opt.restart, comm);
+  const CheckpointHeader& h = restart.header;
+  if (h.dimension != D || std::abs(h.dx - scene.dx) > 1e-12 * scene.dx)
+    throw CheckpointError(opt.restart + ": written by a " + std::to_string(h.dimension) + "D run with dx = " + std::to_string(h.dx) +
+                          " m; the case has dimension " + std::to_string(D) + " and dx = " + std::to_string(scene.dx) + " m");
+  check_refinement_restart(scene, h, opt.restart);
   return restart;
 }
 
@@ -300,6 +306,7 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
     timing.cpu_before = restart.header.run_cpu_seconds;
   }
   Simulation<D> sim = start_simulation<D>(scene, opt, restarting ? &restart : nullptr);
+  if (restarting) check_restart_case(scene, opt, restart.header);
   {
     std::error_code ec;  // rank 0 creates it; every rank stops when it could not
     if (root) std::filesystem::create_directories(opt.out_dir, ec);
