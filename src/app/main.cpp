@@ -211,11 +211,10 @@ int main(int argc, char** argv) {
     try {
       Kokkos::initialize(argc, argv);
     } catch (const std::exception& e) {  // a --kokkos-* option it cannot read
-      std::string given;
+      std::string given;  // the arguments Kokkos reads (with or without their --kokkos- prefix)
       for (int k = 1; k < argc; ++k)
-        if (std::string(argv[k]).rfind("--kokkos", 0) == 0 || std::string(argv[k]).rfind("--threads", 0) == 0 ||
-            std::string(argv[k]).rfind("--num", 0) == 0 || std::string(argv[k]).rfind("--device", 0) == 0)
-          given += std::string(given.empty() ? "" : " ") + argv[k];
+        for (const char* prefix : {"--kokkos", "--threads", "--num", "--device"})
+          if (std::string(argv[k]).rfind(prefix, 0) == 0) given += std::string(given.empty() ? "" : " ") + argv[k];
       if (rank == 0)
         std::fprintf(stderr, "ondine: error: the Kokkos option%s %s cannot be used (%s); expected the forms `ondine --help` lists\n",
                      given.find(' ') != std::string::npos ? "s" : "", given.empty() ? "given" : given.c_str(), e.what());

@@ -1,6 +1,10 @@
 #include "run/RunRestart.hpp"
 
+#include "io/SnapshotWriter.hpp"
+
 #include <algorithm>
+#include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -89,5 +93,35 @@ void check_refinement_restart(const Scene& scene, const CheckpointHeader& h, con
                         " (key 'refinement'): " + what + " (" + zones_count(saved.size()) + " in the checkpoint, " +
                         zones_count(ours.size()) + " in the case); a run with zones restarts with the zones it was written with");
 }
+
+void check_restart_case(const Scene& scene, const CheckpointHeader& h, const std::string& path, const std::string& out_dir) {
+  const int D = scene.dimension;
+  if (!h.case_name.empty() && h.case_name != scene.name)
+    throw CheckpointError(path + ": written by the case named '" + h.case_name + "'; the case " + scene.source_file + " is named '" +
+                          scene.name + "' (key 'name'); restart it with the case that wrote it (name: " + h.case_name + ")");
+  if (h.rho0 > 0 && std::abs(h.rho0 - scene.rho0) > 1e-12 * scene.rho0)
+    throw CheckpointError(path + ": written with fluid.rho0 = " + std::to_string(h.rho0) + " kg/m^3; the case " + scene.source_file +
+                          " has " + std::to_string(scene.rho0) + " (key 'fluid.rho0'); restart it with the case that wrote it");
+  if (h.domain.size() == 6) {
+    double scale = 0;
+    for (int k = 0; k < D; ++k) scale = std::max(scale, scene.domain.max[k] - scene.domain.min[k]);
+    for (int k = 0; k < D; ++k)
+      if (std::abs(h.domain[k] - scene.domain.min[k]) > 1e-12 * scale || std::abs(h.domain[3 + k] - scene.domain.max[k]) > 1e-12 * scale)
+        throw CheckpointError(path + ": written with another domain box (axis " + std::to_string(k) + ": " + std::to_string(h.domain[k]) +
+                              " to " + std::to_string(h.domain[3 + k]) + " m) than the case " + scene.source_file + " (" +
+                              std::to_string(scene.domain.min[k]) + " to " + std::to_string(scene.domain.max[k]) +
+                              " m, key 'domain'); restart it with the case that wrote it");
+  }
+  // the run's snapshot series goes on in its folder: the snapshots written before the checkpoint must be there
+  // (checked here, before the folder is written to; SnapshotWriter::resume then reads them)
+  const SnapshotWriter series(out_dir, scene.name);
+  for (std::int64_t k = 0; k < h.snapshots; ++k) {
+    const std::string snap = out_dir + "/" + series.file_name(static_cast<std::size_t>(k));
+    if (!std::filesystem::exists(snap))
+      throw CheckpointError(path + ": the run that wrote it had " + std::to_string(h.snapshots) + " snapshots, and " + snap +
+                            " is missing: a restart continues that run's series in its own folder; give --out the folder that holds them");
+  }
+}
+
 
 }  // namespace ondine

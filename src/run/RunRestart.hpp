@@ -17,5 +17,9 @@ std::string refinement_zone_text(const Scene& s);
 // A checkpoint's APR state against the case: both or neither have refinement zones,
 // and the same ones. Throws CheckpointError naming the file and the difference.
 void check_refinement_restart(const Scene& scene, const CheckpointHeader& h, const std::string& path);
+// After the checkpoint's own checks: the case is the one that wrote it (name, fluid.rho0, domain),
+// and out_dir holds the snapshots that run wrote before the checkpoint (the series continues
+// there). Throws CheckpointError naming the file and the key or the missing snapshot.
+void check_restart_case(const Scene& scene, const CheckpointHeader& h, const std::string& path, const std::string& out_dir);
 
 }  // namespace ondine

@@ -15,7 +15,6 @@
 #include "run/BuildInfo.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/Checkpoint.hpp"
-#include "io/SnapshotWriter.hpp"
 #include "run/RunRecorder.hpp"
 #include "run/RunRestart.hpp"
 #include "solver/Simulation.hpp"
@@ -133,35 +132,6 @@ Simulation<D> start_simulation(const Scene& scene, const RunOptions& opt, const 
                             bad.substr(0, bad.find(',')) + "): the file is corrupted");
   }
   return sim;
-}
-
-// After the checkpoint's state is read and checked: the case is the one that wrote it (name, rho0,
-// domain), and the output folder holds that run's snapshots, which the series continues.
-static void check_restart_case(const Scene& scene, const RunOptions& opt, const CheckpointHeader& h) {
-  const int D = scene.dimension;
-  if (!h.case_name.empty() && h.case_name != scene.name)
-    throw CheckpointError(opt.restart + ": written by the case named '" + h.case_name + "'; the case " + scene.source_file + " is named '" +
-                          scene.name + "' (key 'name'); restart it with the case that wrote it (name: " + h.case_name + ")");
-  if (h.rho0 > 0 && std::abs(h.rho0 - scene.rho0) > 1e-12 * scene.rho0)
-    throw CheckpointError(opt.restart + ": written with fluid.rho0 = " + std::to_string(h.rho0) + " kg/m^3; the case " + scene.source_file +
-                          " has " + std::to_string(scene.rho0) + " (key 'fluid.rho0'); restart it with the case that wrote it");
-  if (h.domain.size() == 6) {
-    double scale = 0;
-    for (int k = 0; k < D; ++k) scale = std::max(scale, scene.domain.max[k] - scene.domain.min[k]);
-    for (int k = 0; k < D; ++k)
-      if (std::abs(h.domain[k] - scene.domain.min[k]) > 1e-12 * scale || std::abs(h.domain[3 + k] - scene.domain.max[k]) > 1e-12 * scale)
-        throw CheckpointError(opt.restart + ": written with another domain box (axis " + std::to_string(k) + ": " + std::to_string(h.domain[k]) +
-                              " to " + std::to_string(h.domain[3 + k]) + " m) than the case " + scene.source_file + " (" +
-                              std::to_string(scene.domain.min[k]) + " to " + std::to_string(scene.domain.max[k]) +
-                              " m, key 'domain'); restart it with the case that wrote it");
-  }
-  // the run's snapshot series goes on in its folder: the snapshots written before the checkpoint must be there
-  for (std::int64_t k = 0; k < h.snapshots; ++k) {
-    const std::string snap = opt.out_dir + "/" + SnapshotWriter(opt.out_dir, scene.name).file_name(static_cast<std::size_t>(k));
-    if (!std::filesystem::exists(snap))
-      throw CheckpointError(opt.restart + ": the run that wrote it had " + std::to_string(h.snapshots) + " snapshots, and " + snap +
-                            " is missing: a restart continues that run's series in its own folder; give --out the folder that holds them");
-  }
 }
 
 // The checkpoint to restart from, checked against the case.
@@ -306,7 +276,7 @@ RunReport run(const Scene& scene, const RunOptions& opt) {
     timing.cpu_before = restart.header.run_cpu_seconds;
   }
   Simulation<D> sim = start_simulation<D>(scene, opt, restarting ? &restart : nullptr);
-  if (restarting) check_restart_case(scene, opt, restart.header);
+  if (restarting) check_restart_case(scene, restart.header, opt.restart, opt.out_dir);
   {
     std::error_code ec;  // rank 0 creates it; every rank stops when it could not
     if (root) std::filesystem::create_directories(opt.out_dir, ec);
