@@ -382,15 +382,23 @@ const std::vector<ValidationCase>& catalogue() {
        {"reference.length=0.5", "time.duration=0.11"}},
       // impact_wedge_apr_2d's two levels (s/dx = 40 at the wall) in the thesis' block (above), and the
       // same with the velocity's MUSCL state in the wall's impedance term (scheme.wall_velocity_reconstruction),
-      // then with the case file's three levels (80) and four (160: a GPU's job). Full level only (1.7e5
-      // particles at the start, about 17 minutes each at 40 here; 80 about 1.7 hours). Shown, not bounded
+      // then with the case file's three levels (80) and four (160: a GPU's job), and the three with
+      // local time stepping (_lts: to t = 0.03 s at 80, 0.32 of the global step's wall time). Full
+      // level only (1.7e5 particles at the start, about 17 minutes each at 40 here; 80 about 1.7
+      // hours). Shown, not bounded
       {"impact_wedge_apr_2d_thesis_block", "cases/wedge_impact_2d.yaml", 1.0,
        {{0.1, true, true, "apr_s40", "cases/wedge_impact_apr_2d.yaml", {wedge_two_levels}},
         {0.1, true, true, "apr_s40_wall_velocity", "cases/wedge_impact_apr_2d.yaml",
          {wedge_two_levels, "scheme.wall_velocity_reconstruction=true"}},
         {0.1, true, true, "apr_s80_wall_velocity", "cases/wedge_impact_apr_2d.yaml", {"scheme.wall_velocity_reconstruction=true"}},
         {0.1, true, true, "apr_s160_wall_velocity", "cases/wedge_impact_apr_2d.yaml",
-         {wedge_four_levels, "scheme.wall_velocity_reconstruction=true"}}},
+         {wedge_four_levels, "scheme.wall_velocity_reconstruction=true"}},
+        {0.1, true, true, "apr_s40_wall_velocity_lts", "cases/wedge_impact_apr_2d.yaml",
+         {wedge_two_levels, "scheme.wall_velocity_reconstruction=true", lts}},
+        {0.1, true, true, "apr_s80_wall_velocity_lts", "cases/wedge_impact_apr_2d.yaml",
+         {"scheme.wall_velocity_reconstruction=true", lts}},
+        {0.1, true, true, "apr_s160_wall_velocity_lts", "cases/wedge_impact_apr_2d.yaml",
+         {wedge_four_levels, "scheme.wall_velocity_reconstruction=true", lts}}},
        stable({{"wall_crossings", 0.5}}), with({"time.snapshot_every=1000000"}, wedge_thesis_block), {}, wedge_shown},
       // Open boundaries (`--case open`). The cylinder at Re = 100 (cases/cylinder_re100_2d.yaml), C_D,
       // the lift amplitude and St from the whole lift periods after 2.5 s of a 4.5 s run, against the
