@@ -23,9 +23,9 @@ enum Action : int { Keep = 0, Delete = 1, Refine = 2, Derefine = 3 };
 //  - a mother more than dx_r / 2 beyond E_{r+1} stops being one (Derefine): it is
 //    an SPH particle again, with the fields the guard interpolation (5.23 = 5.24)
 //    gave it, and its daughters are deleted with it (DaughterRemoval), wherever
-//    they are. Derefining families whole keeps the mass of the leaves exact; a
-//    daughter that drifts beyond its transition layer before its mother leaves
-//    is a passive guard until then (docs/apr.md). The dx_r / 2 hysteresis keeps a
+//    they are, except those inside Z_{r+1}, which are adopted (kernels/apr/Adoption.hpp).
+//    Either keeps the mass of the leaves exact; a daughter that drifts beyond its
+//    transition layer before its mother leaves is a passive guard until then (docs/apr.md). The dx_r / 2 hysteresis keeps a
 //    mother on the layer's edge from refining and derefining at every bookkeeping.
 template <int D>
 struct Classify {

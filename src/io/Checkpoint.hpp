@@ -32,6 +32,8 @@ struct CheckpointRefinement {
   std::int64_t refined = 0;           // mothers refined since t = 0
   std::int64_t deleted = 0;           // daughters deleted since t = 0
   std::int64_t families_moved = 0;    // families moved off a wall since t = 0 (DaughterWallClearance)
+  std::int64_t adopted = 0;           // daughters adopted since t = 0 (kernels/apr/Adoption.hpp)
+  std::int64_t orphans_deleted = 0;   // daughters inside their zone deleted for want of an adopter since t = 0
   std::int64_t guard_shifts = 0;      // daughter guards shifted since t = 0, all ranks (GuardSpacing)
   std::int64_t guards_limited = 0;    // guard interpolations limited since t = 0, all ranks (GuardApply)
   std::vector<double> level_steps;    // local time stepping: the steps of each level since t = 0 (exact integers)

@@ -213,6 +213,8 @@ nlohmann::json run_summary(const Scene& scene, const RunOptions& opt, const Simu
                        {"passive_guards", apr.passive()},
                        {"refined", apr.refined()},
                        {"deleted", apr.deleted()},
+                       {"adopted", apr.adopted()},
+                       {"orphans_deleted", apr.orphans_deleted()},
                        {"local_time_stepping", scene.refinement_local_time_stepping}};
     // with local time stepping, the steps each level took since t = 0 (2^l per coarse step where it has particles)
     if (!sim.level_steps().empty()) j["refinement"]["level_steps"] = sim.level_steps();

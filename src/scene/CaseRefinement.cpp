@@ -134,7 +134,7 @@ void check_block_seams(const Reader& r, YAML::Node& root, const Scene& s) {
 // adaptive particle refinement (thesis 5.4, docs/apr.md): nested boxes, one level per depth
 void read_refinement(const Reader& r, YAML::Node& root, Scene& s) {
   if (const YAML::Node ref = root["refinement"]) {
-    r.only_keys(ref, "refinement", {"zones", "transition", "guard_shifting", "mother_shifting", "local_time_stepping"});
+    r.only_keys(ref, "refinement", {"zones", "transition", "guard_shifting", "mother_shifting", "local_time_stepping", "adoption"});
     if (ref["guard_shifting"]) s.refinement_guard_shifting = r.boolean(ref["guard_shifting"], "refinement.guard_shifting");
     if (ref["mother_shifting"]) s.refinement_mother_shifting = r.boolean(ref["mother_shifting"], "refinement.mother_shifting");
     if (ref["transition"]) {
@@ -151,6 +151,7 @@ void read_refinement(const Reader& r, YAML::Node& root, Scene& s) {
       r.fail(ref, "refinement", "scheme.renormalised_continuity with refinement zones is not supported (the per-level flux does not run it)");
     if (ref["local_time_stepping"])
       s.refinement_local_time_stepping = r.boolean(ref["local_time_stepping"], "refinement.local_time_stepping");
+    if (ref["adoption"]) s.refinement_adoption = r.boolean(ref["adoption"], "refinement.adoption");
     read_zones(r, r.required(ref, "refinement", "zones"), "refinement.zones", 1, -1, s);
     check_block_seams(r, root, s);
   }

@@ -296,6 +296,8 @@ struct Scene {
   double refinement_transition = 1.0;  // width of the daughter-guard layer, in R of the coarser level (thesis: R_m)
   // local time stepping by level: level l advances with step dt_0 / 2^l (Simulation<D>::step_local)
   bool refinement_local_time_stepping = false;
+  // a dying mother's daughters inside their zone are adopted by the nearest mother guard (kernels/apr/Adoption.hpp)
+  bool refinement_adoption = true;
   int max_refinement_level() const {
     int l = 0;
     for (const RefinementZone& z : refinement_zones) l = l > z.level ? l : z.level;

@@ -17,6 +17,7 @@
 #include "kernels/CellList.hpp"
 #include "kernels/Permute.hpp"
 #include "kernels/FillCuts.hpp"
+#include "kernels/apr/Adoption.hpp"
 #include "kernels/apr/CutTrim.hpp"
 #include "kernels/apr/GuardInterpolation.hpp"
 #include "kernels/apr/InteractionLists.hpp"
@@ -36,7 +37,7 @@ class AdaptiveRefinement {
   AdaptiveRefinement() = default;
   // `level_skins`: a Verlet skin per level (local time stepping), or empty: `skin` for every level
   AdaptiveRefinement(const Scene& s, const PeriodicBox<D>& box, double skin, const std::vector<double>& level_skins = {})
-      : scene_zones_(s.refinement_zones), kernel_(s.kernel), skin_(skin) {
+      : scene_zones_(s.refinement_zones), kernel_(s.kernel), skin_(skin), adoption_(s.refinement_adoption) {
     for (int l = 0; l < kAprMaxLevels; ++l) skins_[l] = l < static_cast<int>(level_skins.size()) ? level_skins[l] : skin;
     zones_.count = static_cast<int>(s.refinement_zones.size());
     zones_.max_level = s.max_refinement_level();
@@ -75,6 +76,10 @@ class AdaptiveRefinement {
   std::int64_t next_id() const { return next_id_; }
   std::int64_t deleted() const { return deleted_; }    // daughters deleted so far
   std::int64_t families_moved() const { return families_moved_; }  // moved off a wall (DaughterWallClearance)
+  // daughters of a dying mother kept inside their zone by adoption (kernels/apr/Adoption.hpp), and
+  // those inside it that found no adopter and went with their family
+  std::int64_t adopted() const { return adopted_; }
+  std::int64_t orphans_deleted() const { return orphans_deleted_; }
   std::int64_t guard_shifts() const { return guard_shifts_; }  // daughter guards shifted (GuardSpacing), summed over steps
   // guard interpolations put back into their sources' range (apr::GuardApply::limit), summed over stages
   std::int64_t guards_limited() const { return guards_limited_; }
@@ -112,6 +117,8 @@ class AdaptiveRefinement {
     c.refined = refined_;
     c.deleted = deleted_;
     c.families_moved = families_moved_;
+    c.adopted = adopted_;
+    c.orphans_deleted = orphans_deleted_;
     for (int a = 0; a < 3; ++a) c.momentum_change[a] = a < D ? momentum_change_[a] : 0.0;
     c.momentum_scale = momentum_scale_;
     c.offset.assign(3 * scene_zones_.size(), 0.0);
@@ -134,6 +141,8 @@ class AdaptiveRefinement {
     refined_ = c.refined;
     deleted_ = c.deleted;
     families_moved_ = c.families_moved;
+    adopted_ = c.adopted;
+    orphans_deleted_ = c.orphans_deleted;
     for (int a = 0; a < D; ++a) momentum_change_[a] = c.momentum_change[a];
     momentum_scale_ = c.momentum_scale;
     for (std::size_t z = 0; z < scene_zones_.size(); ++z)
@@ -201,6 +210,13 @@ class AdaptiveRefinement {
                                           p.get(field::AprMother{}), action});
     // derefinement (5.23): the daughters of each derefining (or deleted) mother, level by level
     // the dying ids of every rank, sorted (they are few): a daughter may live on another rank
+    Kokkos::View<int*, MemSpace> classified;  // Classify's actions (an adopted daughter takes hers back)
+    if (adoption_) {
+      classified = Kokkos::View<int*, MemSpace>("ondine::APR::classified", n);
+      Kokkos::deep_copy(classified, action);
+    }
+    std::vector<std::vector<double>> changes(levels_);  // (mother id, mass change) pairs of this rank, per mother level
+    Kokkos::View<std::int64_t*, MemSpace> dying_above;  // the previous level's dying ids
     for (int l = 1; l < levels_; ++l) {
       Kokkos::View<std::int64_t*, MemSpace> dying("ondine::APR::dying", n);
       int count = 0;
@@ -209,10 +225,14 @@ class AdaptiveRefinement {
                             count);
       const auto all = sorted_on_every_rank(Kokkos::subview(dying, std::make_pair(0, count)), comm, "ondine::APR::dying_all");
       const int total = static_cast<int>(all.extent(0));
-      if (total == 0) continue;
-      Kokkos::parallel_for("ondine::APR::remove_daughters", Kokkos::RangePolicy<ExecSpace>(0, n),
-                           apr::DaughterRemoval{action, p.get(field::AprBirthLevel{}), p.get(field::AprParent{}), all, l, total});
+      if (total > 0) {
+        Kokkos::parallel_for("ondine::APR::remove_daughters", Kokkos::RangePolicy<ExecSpace>(0, n),
+                             apr::DaughterRemoval{action, p.get(field::AprBirthLevel{}), p.get(field::AprParent{}), all, l, total});
+        if (adoption_) adopt(p, cells, box, n, comm, action, classified, dying_above, l, changes[l - 1]);
+      }
+      dying_above = all;
     }
+    if (adoption_) pass_mass_changes(p, n, comm, action, changes);
     // the survivors, then 2^D copies of each refining mother (kernels/ParticleSetEdit.hpp)
     const edit::Plan plan = edit::plan(action, n, apr::Delete, apr::Refine, 1 << D, "ondine::APR");
     const int kept = plan.kept, nref = plan.spawned;
@@ -426,6 +446,71 @@ class AdaptiveRefinement {
   }
 
 private:
+  // The adoptions of level l's daughters (kernels/apr/Adoption.hpp), and their (mother id,
+  // mass change) pairs appended to `out`.
+  void adopt(ParticleSet<D>& p, const CellList<D>& cells, const PeriodicBox<D>& box, int n, const Communicator& comm,
+             const Kokkos::View<int*, MemSpace>& action, const Kokkos::View<int*, MemSpace>& classified,
+             const Kokkos::View<std::int64_t*, MemSpace>& dying_above, int l, std::vector<double>& out) {
+    Kokkos::View<std::int64_t*, MemSpace> from("ondine::APR::adopted_from", n);
+    long counts[2] = {0, 0};
+    Kokkos::parallel_reduce("ondine::APR::adoption", Kokkos::RangePolicy<ExecSpace>(0, n),
+                            apr::Adoption<D>{2, cells, box, zones_, p.get(field::Position{}), p.get(field::AprBirthLevel{}),
+                                             p.get(field::AprMother{}), p.get(field::AprParent{}), p.get(field::GlobalId{}), action,
+                                             classified, dying_above, from, l, n},
+                            counts);
+    adopted_ += comm.sum(static_cast<std::int64_t>(counts[0]));
+    orphans_deleted_ += comm.sum(static_cast<std::int64_t>(counts[1]));
+    apr::AdoptionScan<D> scan{from, p.get(field::AprParent{}), p.get(field::Mass{}), {}};
+    append_pairs(scan, n, 4, "ondine::APR::adoption_pairs", out);
+  }
+
+  // The mass changes of the adoptions, from the finest mother level up: each mother takes the
+  // sum of hers (gathered by id on every rank: a mother may live on another rank than her
+  // daughters) and passes it on to her own mother, so that every mother holds the sum of her
+  // daughters' masses.
+  void pass_mass_changes(ParticleSet<D>& p, int n, const Communicator& comm, const Kokkos::View<int*, MemSpace>& action,
+                         std::vector<std::vector<double>>& changes) {
+    Kokkos::View<double*, MemSpace> change("ondine::APR::mass_change", n);
+    for (int l = levels_ - 2; l >= 0; --l) {
+      const std::vector<double> all = comm.gather_all(changes[l]);
+      if (all.empty()) continue;
+      std::vector<std::pair<std::int64_t, double>> by_id(all.size() / 2);
+      for (std::size_t k = 0; k < by_id.size(); ++k) by_id[k] = {static_cast<std::int64_t>(all[2 * k]), all[2 * k + 1]};
+      std::sort(by_id.begin(), by_id.end());  // the same order on any rank count
+      Kokkos::View<std::int64_t*, MemSpace> target("ondine::APR::change_target", by_id.size());
+      Kokkos::View<double*, MemSpace> delta("ondine::APR::change_delta", by_id.size());
+      {
+        auto ht = Kokkos::create_mirror_view(target);
+        auto hd = Kokkos::create_mirror_view(delta);
+        for (std::size_t k = 0; k < by_id.size(); ++k) {
+          ht(k) = by_id[k].first;
+          hd(k) = by_id[k].second;
+        }
+        Kokkos::deep_copy(target, ht);
+        Kokkos::deep_copy(delta, hd);
+      }
+      Kokkos::parallel_for("ondine::APR::mass_change", Kokkos::RangePolicy<ExecSpace>(0, n),
+                           apr::MassChange<D>{p.get(field::Mass{}), p.get(field::AprBirthLevel{}), p.get(field::GlobalId{}), target,
+                                              delta, action, change, l});
+      if (l == 0) break;
+      apr::ChangeScan<D> scan{change, p.get(field::AprParent{}), {}};
+      append_pairs(scan, n, 2, "ondine::APR::change_pairs", changes[l - 1]);
+    }
+  }
+
+  // a packing scan's pairs (`width` doubles per entry), counted first, appended to `out`
+  template <class Scan>
+  static void append_pairs(Scan& scan, int n, int width, const char* name, std::vector<double>& out) {
+    int count = 0;
+    Kokkos::parallel_scan(name, Kokkos::RangePolicy<ExecSpace>(0, n), scan, count);
+    if (count == 0) return;
+    scan.pairs = Kokkos::View<double*, MemSpace>(std::string(name), static_cast<std::size_t>(width) * count);
+    Kokkos::parallel_scan(name, Kokkos::RangePolicy<ExecSpace>(0, n), scan, count);
+    const std::size_t at = out.size();
+    out.resize(at + scan.pairs.extent(0));
+    Kokkos::deep_copy(Kokkos::View<double*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(out.data() + at, scan.pairs.extent(0)), scan.pairs);
+  }
+
   // zone boxes at their current offsets (a nested zone moves with its outermost parent)
   void place_zones() {
     for (std::size_t z = 0; z < scene_zones_.size(); ++z) {
@@ -445,6 +530,7 @@ private:
   RefinementZones<D> zones_;
   KernelType kernel_ = KernelType::WendlandC2;
   double skin_ = 0;
+  bool adoption_ = true;  // refinement.adoption (kernels/apr/Adoption.hpp)
   double skins_[kAprMaxLevels] = {};  // each level's Verlet skin (skin_ unless local time stepping)
   apr::LevelCells<D> cells_;          // the levels' cell lists L. and Lx are built from
   int levels_ = 1;
@@ -455,7 +541,8 @@ private:
   Kokkos::View<int*, MemSpace> wide_saved_;  // wide_ before an output (save_wide_flags)
   Kokkos::View<int*, MemSpace> used_;  // per guard: its Lx entries within the interpolation radius (first in its row)
   unsigned weights_valid_ = 0;  // bit l: the shape functions of level l's guards are up to date
-  std::int64_t next_id_ = 0, refined_ = 0, deleted_ = 0, families_moved_ = 0, guard_shifts_ = 0, guards_limited_ = 0;
+  std::int64_t next_id_ = 0, refined_ = 0, deleted_ = 0, families_moved_ = 0, guard_shifts_ = 0, guards_limited_ = 0,
+               adopted_ = 0, orphans_deleted_ = 0;
   double interp_seconds_ = 0;
   double momentum_change_[D] = {}, momentum_scale_ = 0;
 };

@@ -75,6 +75,8 @@ void Refinement<D>::bookkeeping(StepState<D>& s) {
     s.set_owned(domain.migrate(p, s.owned()));
     domain.build_halos(p, s.owned());
     domain.refresh(p, field::AprBirthLevel{});
+    // adoption reads the halos' mother flags and parents (kernels/apr/Adoption.hpp)
+    if (s.scene().refinement_adoption) domain.refresh(p, field::AprMother{}, field::AprParent{});
   }
   domain.build_cells(p.get(field::Position{}), static_cast<int>(p.size()));  // for the prolongation gradient
   s.set_owned(apr_.update(p, domain.cells(), domain.box(), s.owned(), s.comm(), s.walls().near_facets()));
