@@ -13,6 +13,7 @@
 #include "scene/CaseFile.hpp"
 #include "solver/Simulation.hpp"
 #include "state_hash_cases.hpp"
+#include "apr_adoption_scenario.hpp"
 
 #include <cinttypes>
 
@@ -250,4 +251,34 @@ TEST_CASE("state hashes of the regression cases are unchanged (several ranks)", 
     CHECK(h.first == recorded.at(comm.size()).at(c.name).first);
     CHECK(h.second == recorded.at(comm.size()).at(c.name).second);
   }
+}
+
+// Adoption across ranks (tests/apr_adoption_scenario.hpp): a mother leaves her zone far from
+// her daughters, which may live on other ranks than she and their adopters; the adopters are
+// the brute-force ones over every rank's particles (those of one rank in test_apr_adoption.cpp),
+// the masses exact.
+TEST_CASE("APR adoption across ranks: the adopters are the brute-force ones, every mother holds her daughters' mass", "[mpi]") {
+  const test::AprGather every_rank = [](const Simulation<2>& sim) {
+    const std::vector<test::AprRow> mine = test::owned_apr_rows(sim);
+    const Communicator comm;
+    std::vector<int> counts(comm.size()), displ(comm.size());
+    const int n = static_cast<int>(mine.size() * sizeof(test::AprRow));
+    MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm.comm());
+    int total = 0;
+    for (int r = 0; r < comm.size(); ++r) {
+      displ[r] = total;
+      total += counts[r];
+    }
+    std::vector<test::AprRow> all(total / sizeof(test::AprRow));
+    MPI_Allgatherv(mine.data(), n, MPI_BYTE, all.data(), counts.data(), displ.data(), MPI_BYTE, comm.comm());
+    return all;
+  };
+  const test::AdoptionOutcome o = test::mother_leaves(true, every_rank);
+  CHECK(o.daughters_kept == 4);
+  CHECK(o.adopters_as_brute_force == 4);
+  CHECK(o.adopted == 4);
+  CHECK(o.orphans_deleted == 0);
+  CHECK_FALSE(o.mother_kept);
+  CHECK(o.leaf_drift <= 1e-14);
+  CHECK(o.worst_family <= 1e-14);
 }
