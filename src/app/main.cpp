@@ -89,6 +89,12 @@ int run_app(int argc, char** argv, int ranks, int rank, const std::string& no_de
   validate->add_option("--variant", vopt.variants,
                        "run only this rung of a ladder (its folder's name: coarse, apr, apr_lts, fine, apr_s40, ...; repeatable); the "
                        "others are left out of the report");
+  // a first word that is no command: CLI11 says only that a subcommand is required
+  if (argc > 1 && argv[1][0] != '-' && std::string(argv[1]) != "run" && std::string(argv[1]) != "validate") {
+    if (rank == 0)
+      std::fprintf(stderr, "ondine: error: unknown command '%s': expected run or validate (ondine --help)\n", argv[1]);
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
