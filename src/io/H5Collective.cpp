@@ -53,13 +53,28 @@ struct RowSelection {
   RowSelection& operator=(const RowSelection&) = delete;
 };
 
-void write_attr(hid_t file, const char* name, hid_t type, const void* value) {
-  const hid_t space = H5Screate(H5S_SCALAR);
-  const hid_t attr = H5Acreate2(file, name, type, space, H5P_DEFAULT, H5P_DEFAULT);
-  if (attr < 0) throw std::runtime_error(std::string("HDF5: cannot create attribute ") + name);
-  check(H5Awrite(attr, type, value), std::string("writing attribute ") + name);
-  H5Aclose(attr);
-  H5Sclose(space);
+// an HDF5 id, closed when it goes out of scope, whatever is thrown in between
+struct Handle {
+  hid_t id;
+  herr_t (*close)(hid_t);
+  Handle(hid_t i, herr_t (*c)(hid_t)) : id(i), close(c) {}
+  ~Handle() {
+    if (id >= 0) close(id);
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  operator hid_t() const { return id; }
+};
+
+// attribute `name` of `type` over `space` (taken over), from `value` (none for an empty one)
+void write_attr(hid_t file, const std::string& path, const char* name, hid_t type, hid_t space_id, const void* value) {
+  const Handle space(space_id, H5Sclose);
+  errno = 0;
+  const Handle attr(space.id < 0 ? -1 : H5Acreate2(file, name, type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  if (attr.id < 0 || (value && H5Awrite(attr, type, value) < 0)) {
+    const int e = errno;
+    throw std::runtime_error("cannot write " + path + " (HDF5 attribute " + name + ")" + system_reason(e));
+  }
 }
 
 }  // namespace
@@ -86,45 +101,45 @@ H5CollectiveFile::~H5CollectiveFile() {
   if (comm_.rank() == 0) std::remove(tmp_.c_str());
 }
 
-void H5CollectiveFile::attribute(const char* name, double v) { write_attr(file_, name, H5T_NATIVE_DOUBLE, &v); }
-void H5CollectiveFile::attribute(const char* name, std::int64_t v) { write_attr(file_, name, H5T_NATIVE_INT64, &v); }
-void H5CollectiveFile::attribute(const char* name, int v) { write_attr(file_, name, H5T_NATIVE_INT, &v); }
-void H5CollectiveFile::attribute(const char* name, std::uint64_t v) { write_attr(file_, name, H5T_NATIVE_UINT64, &v); }
+void H5CollectiveFile::attribute(const char* name, double v) { write_attr(file_, path_, name, H5T_NATIVE_DOUBLE, H5Screate(H5S_SCALAR), &v); }
+void H5CollectiveFile::attribute(const char* name, std::int64_t v) { write_attr(file_, path_, name, H5T_NATIVE_INT64, H5Screate(H5S_SCALAR), &v); }
+void H5CollectiveFile::attribute(const char* name, int v) { write_attr(file_, path_, name, H5T_NATIVE_INT, H5Screate(H5S_SCALAR), &v); }
+void H5CollectiveFile::attribute(const char* name, std::uint64_t v) { write_attr(file_, path_, name, H5T_NATIVE_UINT64, H5Screate(H5S_SCALAR), &v); }
 void H5CollectiveFile::attribute(const char* name, const std::string& v) {
-  const hid_t type = H5Tcopy(H5T_C_S1);
-  H5Tset_size(type, v.size() + 1);
-  write_attr(file_, name, type, v.c_str());
-  H5Tclose(type);
+  const Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  if (type.id < 0 || H5Tset_size(type, v.size() + 1) < 0)
+    throw std::runtime_error("cannot write " + path_ + " (HDF5 string type of attribute " + name + ")");
+  write_attr(file_, path_, name, type, H5Screate(H5S_SCALAR), v.c_str());
 }
 
 void H5CollectiveFile::attribute(const char* name, const std::vector<double>& v) {
   const hsize_t dims[1] = {static_cast<hsize_t>(v.size())};
-  const hid_t space = v.empty() ? H5Screate(H5S_NULL) : H5Screate_simple(1, dims, nullptr);
-  const hid_t attr = H5Acreate2(file_, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
-  if (attr < 0) throw std::runtime_error(std::string("HDF5: cannot create attribute ") + name);
-  if (!v.empty()) check(H5Awrite(attr, H5T_NATIVE_DOUBLE, v.data()), std::string("writing attribute ") + name);
-  H5Aclose(attr);
-  H5Sclose(space);
+  write_attr(file_, path_, name, H5T_NATIVE_DOUBLE, v.empty() ? H5Screate(H5S_NULL) : H5Screate_simple(1, dims, nullptr),
+             v.empty() ? nullptr : v.data());
 }
 
 void H5CollectiveFile::dataset(const std::string& name, const std::vector<double>& rows, int components) {
   const hsize_t dims[2] = {static_cast<hsize_t>(global_), static_cast<hsize_t>(components)};
   const int rank = components == 1 ? 1 : 2;
-  const hid_t space = H5Screate_simple(rank, dims, nullptr);
-  const hid_t set = H5Dcreate2(file_, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  if (set < 0) throw std::runtime_error("HDF5: cannot create dataset " + name);
-  herr_t st;
+  const Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose);
   errno = 0;
+  Handle set(space.id < 0 ? -1 : H5Dcreate2(file_, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+             H5Dclose);
+  if (set.id < 0) {
+    const int e = errno;
+    throw std::runtime_error("cannot write " + path_ + " (HDF5 dataset " + name + ")" + system_reason(e));
+  }
+  herr_t st;
   {
     const RowSelection sel(space, offset_, local_, components);
-    const hid_t dxpl = transfer_list(comm_);
+    const Handle dxpl(transfer_list(comm_), H5Pclose);
     st = H5Dwrite(set, H5T_NATIVE_DOUBLE, sel.mem, space, dxpl, rows.empty() ? nullptr : rows.data());
-    H5Pclose(dxpl);
   }
   // the data may reach the file only when the dataset is closed (a full disk fails here)
-  if (H5Dclose(set) < 0) st = -1;
+  const hid_t id = set.id;
+  set.id = -1;
+  if (H5Dclose(id) < 0) st = -1;
   const int e = errno;
-  H5Sclose(space);
   if (st < 0) throw std::runtime_error("cannot write " + path_ + " (HDF5 dataset " + name + ")" + system_reason(e));
 }
 
