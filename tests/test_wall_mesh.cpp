@@ -399,6 +399,13 @@ walls: [{box: {min: [0, 0], max: [1, 1]}, fluid_side: inside}]
                Contains("key 'walls[0].rectangle.v'") && Contains("parallel"));
     CHECK_THAT(error_of(case3d({"{prism: {base: [[0, 0], [1, 0], [1, 0], [0, 1]], z: [0, 1]}, fluid_side: inside}"})),
                Contains("key 'walls[0].prism.base'") && Contains("from point 1 to point 2 (0-based) has zero length"));
+    // a bowtie (its two lobes' areas cancel): named as crossing edges, not as points in line
+    CHECK_THAT(error_of(case3d({"{prism: {base: [[0, 0], [1, 1], [1, 0], [0, 1]], z: [0, 1]}, fluid_side: outside}"})),
+               Contains("key 'walls[0].prism.base'") &&
+                   Contains("the edges from point 0 to point 1 and from point 2 to point 3 (0-based) meet; expected a simple polygon"));
+    // a polygon touching itself at a vertex
+    CHECK_THAT(error_of(case3d({"{prism: {base: [[0, 0], [2, 0], [1, 1], [2, 2], [0, 2], [1, 1]], z: [0, 1]}, fluid_side: outside}"})),
+               Contains("key 'walls[0].prism.base'") && Contains("meet; expected a simple polygon"));
     CHECK_THAT(error_of(case3d({"{prism: {base: [[0, 0], [1, 0], [0, 1]], z: [1, 0]}, fluid_side: inside}"})),
                Contains("key 'walls[0].prism.z'") && Contains("z1 > z0"));
     CHECK_THAT(error_of(case3d({"{cylinder: {centre: [0, 0, 0], axis: [0, 0, 0], radius: 1, length: 1}, fluid_side: inside}"})),

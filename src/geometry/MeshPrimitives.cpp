@@ -1,5 +1,7 @@
 #include "geometry/MeshPrimitives.hpp"
 
+#include "geometry/SegmentMeet.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -7,7 +9,6 @@ namespace ondine::geometry {
 
 namespace {
 
-using P2 = std::array<double, 2>;
 
 double orient(const P2& a, const P2& b, const P2& c) {
   return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
@@ -130,6 +131,15 @@ TriangleMesh prism_mesh(const std::vector<P2>& base, double z0, double z1) {
       throw GeometryError("the edge from point " + std::to_string(i) + " to point " + std::to_string((i + 1) % n) +
                           " (0-based) has zero length (a repeated point; do not repeat the first point at the end)");
   }
+  // a simple polygon: edges that are not neighbours do not meet (a bowtie's cross)
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // neighbours through the first point
+      if (segments_meet(base[i], base[(i + 1) % n], base[j], base[(j + 1) % n], diag))
+        throw GeometryError("the edges from point " + std::to_string(i) + " to point " + std::to_string(i + 1) + " and from point " +
+                            std::to_string(j) + " to point " + std::to_string((j + 1) % n) +
+                            " (0-based) meet; expected a simple polygon (no edge crossing or touching another)");
+    }
   if (!(std::fabs(polygon_twice_area(base)) > 1e-12 * diag * diag))
     throw GeometryError("the base polygon has no area (its points are in line)");
   // counter-clockwise in xy, so that the side walls' normals point out

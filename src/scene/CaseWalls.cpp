@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "geometry/SegmentMeet.hpp"
 #include "scene/CaseSections.hpp"
 
 namespace ondine::case_file {
@@ -78,19 +79,11 @@ void check_no_self_intersection(const Reader& r, const YAML::Node& w, const std:
   using P = std::array<double, 2>;
   const std::size_t n = wall.points.size();
   auto pt = [&](std::size_t k) -> const P& { return wall.points[k % n]; };
-  auto cross = [](const P& o, const P& a, const P& b) { return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]); };
+  auto cross = geometry::cross2;
   double extent = 0;
   for (const P& q : wall.points) extent = std::max({extent, std::abs(q[0] - pt(0)[0]), std::abs(q[1] - pt(0)[1])});
   const double eps = 1e-12 * extent * extent;  // an area: the orientation test's round-off
-  auto on_segment = [&](const P& a, const P& b, const P& q) {
-    return std::abs(cross(a, b, q)) <= eps && std::min(a[0], b[0]) - 1e-12 * extent <= q[0] && q[0] <= std::max(a[0], b[0]) + 1e-12 * extent &&
-           std::min(a[1], b[1]) - 1e-12 * extent <= q[1] && q[1] <= std::max(a[1], b[1]) + 1e-12 * extent;
-  };
-  auto meet = [&](const P& a, const P& b, const P& c, const P& d) {
-    const double d1 = cross(c, d, a), d2 = cross(c, d, b), d3 = cross(a, b, c), d4 = cross(a, b, d);
-    if (((d1 > eps && d2 < -eps) || (d1 < -eps && d2 > eps)) && ((d3 > eps && d4 < -eps) || (d3 < -eps && d4 > eps))) return true;
-    return on_segment(c, d, a) || on_segment(c, d, b) || on_segment(a, b, c) || on_segment(a, b, d);
-  };
+  auto meet = [&](const P& a, const P& b, const P& c, const P& d) { return geometry::segments_meet(a, b, c, d, extent); };
   const YAML::Node at = w["points"] ? w["points"] : w;
   for (std::size_t i = 0; i < nseg; ++i) {
     const P &a = pt(i), &b = pt(i + 1);
