@@ -359,6 +359,23 @@ TEST_CASE("Bad 3D walls are refused naming the key, the file and the triangle", 
     const Point a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0}, d{0.25, 0.25, 0};
     CHECK_THAT(stl_error("flat_tet.stl", {{a, c, b}, {a, b, d}, {b, c, d}, {c, a, d}}), Contains("encloses no volume"));
   }
+  SECTION("two shells that cross, and two that do not") {
+    const auto shifted = [](Soup s, double by) {
+      for (auto& t : s)
+        for (auto& p : t)
+          for (int k = 0; k < 3; ++k) p[k] += by;
+      return s;
+    };
+    Soup s = unit_cube();
+    const Soup b = shifted(unit_cube(), 0.5);  // overlapping the first: their faces cross
+    s.insert(s.end(), b.begin(), b.end());
+    CHECK_THAT(stl_error("overlap.stl", s), Contains("key 'walls[0].stl'") && Contains("overlap.stl") && Contains("(0-based) cross each other") &&
+                                                Contains("expected a surface that does not meet itself"));
+    Soup apart = unit_cube();
+    const Soup c = shifted(unit_cube(), 2.0);
+    apart.insert(apart.end(), c.begin(), c.end());
+    CHECK(stl_error("apart.stl", apart).empty());  // two closed shells apart are one valid wall
+  }
   SECTION("a non-finite coordinate") {
     Soup s = unit_cube();
     s[2][1][0] = std::nan("");

@@ -1,5 +1,7 @@
 #include "geometry/MeshChecks.hpp"
 
+#include "geometry/MeshIntersection.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -50,6 +52,20 @@ std::string edge(const TriangleMesh& m, const HalfEdge& e) {
 }
 
 }  // namespace
+
+std::string crossing_problem(const TriangleMesh& m) {
+  std::ostringstream o;
+  const auto [t, u] = first_crossing(m);
+  if (t >= 0) {
+    auto corners = [&](int k) {
+      return format_point(m.vertices[m.triangles[k][0]]) + ", " + format_point(m.vertices[m.triangles[k][1]]) + ", " +
+             format_point(m.vertices[m.triangles[k][2]]);
+    };
+    o << "triangles " << t << " (" << corners(t) << ") and " << u << " (" << corners(u)
+      << ") (0-based) cross each other; expected a surface that does not meet itself";
+  }
+  return o.str();
+}
 
 std::size_t count_open_edges(const TriangleMesh& m) {
   std::size_t open = 0;

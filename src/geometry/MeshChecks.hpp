@@ -16,6 +16,11 @@ namespace ondine::geometry {
 // `closed_because` ends the message of a hole (why a closed surface is needed).
 std::string mesh_problem(const TriangleMesh& m, bool need_closed, const std::string& closed_because = "");
 
+// Two triangles that share no vertex and cross (geometry/MeshIntersection.hpp), with their
+// corners, or an empty string. Run on STL files (the primitives are built simple): its grid
+// has cells of the largest triangle's size, so a fan of thin triangles costs its square.
+std::string crossing_problem(const TriangleMesh& m);
+
 // edges used by one triangle only (0: a closed surface)
 std::size_t count_open_edges(const TriangleMesh& m);
 

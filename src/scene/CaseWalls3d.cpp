@@ -203,6 +203,8 @@ void read_wall_mesh(const Reader& r, const YAML::Node& w, const std::string& key
       b.mesh, geometry == "stl" ? need_closed : b.closed,
       "; fluid_side inside or outside needs a closed surface, front or back takes an open one");
   if (!problem.empty()) r.fail(g, gk, in_file + problem);
+  if (geometry == "stl")
+    if (const std::string crossing = geometry::crossing_problem(b.mesh); !crossing.empty()) r.fail(g, gk, in_file + crossing);
   if (geometry == "stl" && !need_closed && b.closed)
     r.fail(w["fluid_side"], key + ".fluid_side",
            in_file + "the surface is closed: expected fluid_side inside (the fluid in it) or outside (a body in the fluid); "
