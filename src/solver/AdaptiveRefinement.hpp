@@ -290,35 +290,14 @@ class AdaptiveRefinement {
     Kokkos::View<double*, MemSpace> lost("ondine::APR::trim_lost", n);
     std::vector<double> losses;  // (mother id, mass) pairs of the level below
     for (int l = levels_ - 1; l >= 0; --l) {
-      std::vector<double> all = comm.gather_all(losses);
-      std::vector<std::pair<std::int64_t, double>> by_mother(all.size() / 2);
-      for (std::size_t k = 0; k < by_mother.size(); ++k)
-        by_mother[k] = {static_cast<std::int64_t>(all[2 * k]), all[2 * k + 1]};
-      std::sort(by_mother.begin(), by_mother.end());
-      Kokkos::View<std::int64_t*, MemSpace> parent("ondine::APR::trim_parent", by_mother.size());
-      Kokkos::View<double*, MemSpace> mass("ondine::APR::trim_mass", by_mother.size());
-      {
-        auto hp = Kokkos::create_mirror_view(parent);
-        auto hm = Kokkos::create_mirror_view(mass);
-        for (std::size_t k = 0; k < by_mother.size(); ++k) {
-          hp(k) = by_mother[k].first;
-          hm(k) = by_mother[k].second;
-        }
-        Kokkos::deep_copy(parent, hp);
-        Kokkos::deep_copy(mass, hm);
-      }
+      const auto [parent, mass] = sorted_pairs(comm.gather_all(losses), "ondine::APR::trim");
       Kokkos::parallel_for("ondine::APR::trim", Kokkos::RangePolicy<ExecSpace>(0, n),
                            apr::CutTrim<D>{cuts, p.get(field::Position{}), p.get(field::Mass{}), p.get(field::AprBirthLevel{}),
                                            p.get(field::AprMother{}), p.get(field::GlobalId{}), parent, mass, action, lost, l});
       losses.clear();
       if (l == 0) break;
       apr::LossScan<D> scan{lost, p.get(field::AprParent{}), {}};
-      int count = 0;
-      Kokkos::parallel_scan("ondine::APR::trim_count", Kokkos::RangePolicy<ExecSpace>(0, n), scan, count);
-      scan.pairs = Kokkos::View<double*, MemSpace>("ondine::APR::trim_losses", 2 * count);
-      Kokkos::parallel_scan("ondine::APR::trim_losses", Kokkos::RangePolicy<ExecSpace>(0, n), scan, count);
-      losses.resize(2 * static_cast<std::size_t>(count));
-      Kokkos::deep_copy(Kokkos::View<double*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(losses.data(), losses.size()), scan.pairs);
+      append_pairs(scan, n, 2, "ondine::APR::trim_losses", losses);
     }
     const edit::Plan plan = edit::plan(action, n, apr::Delete, apr::Refine, 1 << D, "ondine::APR::trim");
     const Kokkos::View<int*, MemSpace> order = plan.order;
@@ -474,21 +453,7 @@ private:
     for (int l = levels_ - 2; l >= 0; --l) {
       const std::vector<double> all = comm.gather_all(changes[l]);
       if (all.empty()) continue;
-      std::vector<std::pair<std::int64_t, double>> by_id(all.size() / 2);
-      for (std::size_t k = 0; k < by_id.size(); ++k) by_id[k] = {static_cast<std::int64_t>(all[2 * k]), all[2 * k + 1]};
-      std::sort(by_id.begin(), by_id.end());  // the same order on any rank count
-      Kokkos::View<std::int64_t*, MemSpace> target("ondine::APR::change_target", by_id.size());
-      Kokkos::View<double*, MemSpace> delta("ondine::APR::change_delta", by_id.size());
-      {
-        auto ht = Kokkos::create_mirror_view(target);
-        auto hd = Kokkos::create_mirror_view(delta);
-        for (std::size_t k = 0; k < by_id.size(); ++k) {
-          ht(k) = by_id[k].first;
-          hd(k) = by_id[k].second;
-        }
-        Kokkos::deep_copy(target, ht);
-        Kokkos::deep_copy(delta, hd);
-      }
+      const auto [target, delta] = sorted_pairs(all, "ondine::APR::change");
       Kokkos::parallel_for("ondine::APR::mass_change", Kokkos::RangePolicy<ExecSpace>(0, n),
                            apr::MassChange<D>{p.get(field::Mass{}), p.get(field::AprBirthLevel{}), p.get(field::GlobalId{}), target,
                                               delta, action, change, l});
@@ -496,6 +461,26 @@ private:
       apr::ChangeScan<D> scan{change, p.get(field::AprParent{}), {}};
       append_pairs(scan, n, 2, "ondine::APR::change_pairs", changes[l - 1]);
     }
+  }
+
+  // (id, value) pairs packed as doubles, sorted (by id, then value: the same order on any rank
+  // count), on the device
+  static std::pair<Kokkos::View<std::int64_t*, MemSpace>, Kokkos::View<double*, MemSpace>> sorted_pairs(const std::vector<double>& packed,
+                                                                                                         const std::string& name) {
+    std::vector<std::pair<std::int64_t, double>> by_id(packed.size() / 2);
+    for (std::size_t k = 0; k < by_id.size(); ++k) by_id[k] = {static_cast<std::int64_t>(packed[2 * k]), packed[2 * k + 1]};
+    std::sort(by_id.begin(), by_id.end());
+    Kokkos::View<std::int64_t*, MemSpace> id(name + "_id", by_id.size());
+    Kokkos::View<double*, MemSpace> value(name + "_value", by_id.size());
+    auto hi = Kokkos::create_mirror_view(id);
+    auto hv = Kokkos::create_mirror_view(value);
+    for (std::size_t k = 0; k < by_id.size(); ++k) {
+      hi(k) = by_id[k].first;
+      hv(k) = by_id[k].second;
+    }
+    Kokkos::deep_copy(id, hi);
+    Kokkos::deep_copy(value, hv);
+    return {id, value};
   }
 
   // a packing scan's pairs (`width` doubles per entry), counted first, appended to `out`
