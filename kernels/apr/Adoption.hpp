@@ -14,6 +14,7 @@
 #include "kernels/ParticleSetEdit.hpp"
 #include "kernels/apr/Refinement.hpp"
 #include "kernels/apr/RefinementZones.hpp"
+#include "kernels/apr/CutTrim.hpp"
 
 namespace ondine::apr {
 
@@ -113,7 +114,7 @@ struct AdoptionScan {
 // The mass changes of level `level`'s particles (sorted by id; sums of m_m / 2^D,
 // exact in binary): m += the sum of its changes; a particle left without mass (a
 // dying mother whose daughters were all adopted) goes. `change(i)`: what it passes
-// on to its own mother.
+// on to its own mother (packed by LossScan, kernels/apr/CutTrim.hpp).
 template <int D>
 struct MassChange {
   field_view_t<field::Mass, D> m;
@@ -128,8 +129,7 @@ struct MassChange {
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     change(i) = 0.0;
     if (birth(i) != level) return;
-    double sum = 0.0;
-    for (int k = edit::rank_among(target, id(i)); k < static_cast<int>(target.extent(0)) && target(k) == id(i); ++k) sum += delta(k);
+    const double sum = sum_for_id(target, delta, id(i));
     if (sum == 0.0) return;
     const double before = m(i);
     m(i) = before + sum;
@@ -138,22 +138,6 @@ struct MassChange {
       m(i) = 0.0;
       action(i) = Delete;
     }
-  }
-};
-
-// the (mother id, mass change) pairs passed on by one level's particles, packed
-template <int D>
-struct ChangeScan {
-  Kokkos::View<double*, MemSpace> change;
-  field_view_t<field::AprParent, D> parent;
-  Kokkos::View<double*, MemSpace> pairs;  // 2 per change; sized by a first pass with pairs empty
-  KOKKOS_INLINE_FUNCTION void operator()(const int i, int& k, const bool final) const {
-    if (change(i) == 0.0 || parent(i) < 0) return;
-    if (final && pairs.extent(0) > 0) {
-      pairs(2 * k) = static_cast<double>(parent(i));
-      pairs(2 * k + 1) = change(i);
-    }
-    ++k;
   }
 };
 

@@ -13,6 +13,14 @@
 
 namespace ondine::apr {
 
+// the sum of the values whose id (sorted, with repeats) is `id`
+KOKKOS_INLINE_FUNCTION double sum_for_id(const Kokkos::View<std::int64_t*, MemSpace>& ids, const Kokkos::View<double*, MemSpace>& values,
+                                         std::int64_t id) {
+  double sum = 0.0;
+  for (int k = edit::rank_among(ids, id); k < static_cast<int>(ids.extent(0)) && ids(k) == id; ++k) sum += values(k);
+  return sum;
+}
+
 template <int D>
 struct CutTrim {
   FillCuts<D> cuts;
@@ -31,10 +39,7 @@ struct CutTrim {
     lost(i) = 0.0;
     if (birth(i) != level) return;
     if (mother(i) == 1) {
-      double gone = 0.0;
-      for (int k = edit::rank_among(removed_parent, id(i));
-           k < static_cast<int>(removed_parent.extent(0)) && removed_parent(k) == id(i); ++k)
-        gone += removed_mass(k);
+      const double gone = sum_for_id(removed_parent, removed_mass, id(i));
       if (gone == 0.0) return;
       const double before = m(i);
       if (before - gone <= 1e-9 * before) {
@@ -55,14 +60,15 @@ struct CutTrim {
   }
 };
 
-// the (mother id, mass) pairs of the particles of one level with a loss, packed
+// the (mother id, mass change) pairs of the particles of one level with a change (a loss of the
+// trim, a change passed on by adoption, kernels/apr/Adoption.hpp), packed
 template <int D>
 struct LossScan {
   Kokkos::View<double*, MemSpace> lost;
   field_view_t<field::AprParent, D> parent;
-  Kokkos::View<double*, MemSpace> pairs;  // 2 per loss; sized by a first pass with pairs empty
+  Kokkos::View<double*, MemSpace> pairs;  // 2 per change; sized by a first pass with pairs empty
   KOKKOS_INLINE_FUNCTION void operator()(const int i, int& k, const bool final) const {
-    if (!(lost(i) > 0.0)) return;
+    if (lost(i) == 0.0 || parent(i) < 0) return;
     if (final && pairs.extent(0) > 0) {
       pairs(2 * k) = static_cast<double>(parent(i));
       pairs(2 * k + 1) = lost(i);

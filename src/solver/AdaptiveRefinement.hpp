@@ -458,7 +458,7 @@ private:
                            apr::MassChange<D>{p.get(field::Mass{}), p.get(field::AprBirthLevel{}), p.get(field::GlobalId{}), target,
                                               delta, action, change, l});
       if (l == 0) break;
-      apr::ChangeScan<D> scan{change, p.get(field::AprParent{}), {}};
+      apr::LossScan<D> scan{change, p.get(field::AprParent{}), {}};
       append_pairs(scan, n, 2, "ondine::APR::change_pairs", changes[l - 1]);
     }
   }
