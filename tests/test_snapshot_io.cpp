@@ -1,5 +1,6 @@
 // HDF5 snapshot round trip and the XDMF index.
 #include <catch2/catch.hpp>
+#include <hdf5.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -81,5 +82,30 @@ TEST_CASE("Reading a file that is not a snapshot fails with its name", "[unit][i
   } catch (const std::runtime_error& e) {
     CHECK_THAT(e.what(), Catch::Matchers::Contains(f.string()));
   }
+  fs::remove(f);
+}
+
+TEST_CASE("Reading a snapshot without an attribute names it and leaves no HDF5 id open", "[unit][io]") {
+  // an HDF5 file with the time but no step: the reader throws naming the file and the
+  // attribute, and closes what it opened (the library's count of open ids is unchanged)
+  const fs::path f = fs::temp_directory_path() / ("ondine_no_step_" + std::to_string(getpid()) + ".h5");
+  {
+    const hid_t file = H5Fcreate(f.string().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    const hid_t space = H5Screate(H5S_SCALAR);
+    const hid_t a = H5Acreate2(file, "time", H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
+    const double t = 0.5;
+    H5Awrite(a, H5T_NATIVE_DOUBLE, &t);
+    H5Aclose(a);
+    H5Sclose(space);
+    H5Fclose(file);
+  }
+  const ssize_t open_before = H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL);
+  try {
+    read_snapshot(f.string());
+    FAIL("no exception");
+  } catch (const std::runtime_error& e) {
+    CHECK_THAT(e.what(), Catch::Matchers::Contains(f.string()) && Catch::Matchers::Contains("'step'"));
+  }
+  CHECK(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL) == open_before);
   fs::remove(f);
 }

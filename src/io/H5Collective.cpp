@@ -1,4 +1,5 @@
 #include "io/H5Collective.hpp"
+#include "io/H5Handle.hpp"
 
 #include <cerrno>
 #include <cstdio>
@@ -53,24 +54,11 @@ struct RowSelection {
   RowSelection& operator=(const RowSelection&) = delete;
 };
 
-// an HDF5 id, closed when it goes out of scope, whatever is thrown in between
-struct Handle {
-  hid_t id;
-  herr_t (*close)(hid_t);
-  Handle(hid_t i, herr_t (*c)(hid_t)) : id(i), close(c) {}
-  ~Handle() {
-    if (id >= 0) close(id);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  operator hid_t() const { return id; }
-};
-
 // attribute `name` of `type` over `space` (taken over), from `value` (none for an empty one)
 void write_attr(hid_t file, const std::string& path, const char* name, hid_t type, hid_t space_id, const void* value) {
-  const Handle space(space_id, H5Sclose);
+  const H5Handle space(space_id, H5Sclose);
   errno = 0;
-  const Handle attr(space.id < 0 ? -1 : H5Acreate2(file, name, type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  const H5Handle attr(space.id < 0 ? -1 : H5Acreate2(file, name, type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
   if (attr.id < 0 || (value && H5Awrite(attr, type, value) < 0)) {
     const int e = errno;
     throw std::runtime_error("cannot write " + path + " (HDF5 attribute " + name + ")" + system_reason(e));
@@ -106,7 +94,7 @@ void H5CollectiveFile::attribute(const char* name, std::int64_t v) { write_attr(
 void H5CollectiveFile::attribute(const char* name, int v) { write_attr(file_, path_, name, H5T_NATIVE_INT, H5Screate(H5S_SCALAR), &v); }
 void H5CollectiveFile::attribute(const char* name, std::uint64_t v) { write_attr(file_, path_, name, H5T_NATIVE_UINT64, H5Screate(H5S_SCALAR), &v); }
 void H5CollectiveFile::attribute(const char* name, const std::string& v) {
-  const Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  const H5Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
   if (type.id < 0 || H5Tset_size(type, v.size() + 1) < 0)
     throw std::runtime_error("cannot write " + path_ + " (HDF5 string type of attribute " + name + ")");
   write_attr(file_, path_, name, type, H5Screate(H5S_SCALAR), v.c_str());
@@ -121,9 +109,9 @@ void H5CollectiveFile::attribute(const char* name, const std::vector<double>& v)
 void H5CollectiveFile::dataset(const std::string& name, const std::vector<double>& rows, int components) {
   const hsize_t dims[2] = {static_cast<hsize_t>(global_), static_cast<hsize_t>(components)};
   const int rank = components == 1 ? 1 : 2;
-  const Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose);
+  const H5Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose);
   errno = 0;
-  Handle set(space.id < 0 ? -1 : H5Dcreate2(file_, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+  H5Handle set(space.id < 0 ? -1 : H5Dcreate2(file_, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
              H5Dclose);
   if (set.id < 0) {
     const int e = errno;
@@ -132,7 +120,7 @@ void H5CollectiveFile::dataset(const std::string& name, const std::vector<double
   herr_t st;
   {
     const RowSelection sel(space, offset_, local_, components);
-    const Handle dxpl(transfer_list(comm_), H5Pclose);
+    const H5Handle dxpl(transfer_list(comm_), H5Pclose);
     st = H5Dwrite(set, H5T_NATIVE_DOUBLE, sel.mem, space, dxpl, rows.empty() ? nullptr : rows.data());
   }
   // the data may reach the file only when the dataset is closed (a full disk fails here)

@@ -10,6 +10,7 @@
 
 #include "io/AtomicFile.hpp"
 #include "io/H5Collective.hpp"
+#include "io/H5Handle.hpp"
 #include "io/XdmfSeries.hpp"
 
 namespace ondine {
@@ -38,10 +39,6 @@ std::vector<double> to_host_rows(const V& v, int n, int& comps) {
     Kokkos::deep_copy(Kokkos::View<double* [3], Kokkos::LayoutRight, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(out.data(), n), packed);
     return out;
   }
-}
-
-void check(herr_t status, const std::string& what) {
-  if (status < 0) throw std::runtime_error("HDF5: " + what + " failed");
 }
 
 }  // namespace
@@ -103,36 +100,37 @@ void SnapshotWriter::write_index() const {
 
 SnapshotData read_snapshot(const std::string& path, bool with_values) {
   SnapshotData d;
-  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file < 0) throw std::runtime_error(path + ": not a readable HDF5 snapshot");
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become the messages below
+  const H5Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (file.id < 0) throw std::runtime_error(path + ": not a readable HDF5 snapshot");
   auto read_attr = [&](const char* name, hid_t type, void* out) {
-    const hid_t a = H5Aopen(file, name, H5P_DEFAULT);
-    if (a < 0) throw std::runtime_error(path + ": missing attribute '" + name + "'");
-    check(H5Aread(a, type, out), std::string("reading attribute ") + name);
-    H5Aclose(a);
+    const H5Handle a(H5Aopen(file, name, H5P_DEFAULT), H5Aclose);
+    if (a.id < 0) throw std::runtime_error(path + ": missing attribute '" + name + "'");
+    if (H5Aread(a, type, out) < 0) throw std::runtime_error(path + ": attribute '" + name + "' cannot be read");
   };
   read_attr("time", H5T_NATIVE_DOUBLE, &d.time);
   read_attr("step", H5T_NATIVE_INT64, &d.step);
   read_attr("dimension", H5T_NATIVE_INT, &d.dimension);
   H5G_info_t info;
-  check(H5Gget_info(file, &info), "listing " + path);
+  if (H5Gget_info(file, &info) < 0) throw std::runtime_error(path + ": its datasets cannot be listed");
   for (hsize_t k = 0; k < info.nlinks; ++k) {
     char name[256];
-    H5Lget_name_by_idx(file, ".", H5_INDEX_NAME, H5_ITER_INC, k, name, sizeof(name), H5P_DEFAULT);
-    const hid_t set = H5Dopen2(file, name, H5P_DEFAULT);
-    const hid_t space = H5Dget_space(set);
+    if (H5Lget_name_by_idx(file, ".", H5_INDEX_NAME, H5_ITER_INC, k, name, sizeof(name), H5P_DEFAULT) < 0)
+      throw std::runtime_error(path + ": the name of dataset " + std::to_string(k) + " cannot be read");
+    const H5Handle set(H5Dopen2(file, name, H5P_DEFAULT), H5Dclose);
+    if (set.id < 0) throw std::runtime_error(path + ": '" + name + "' is not a dataset");
+    const H5Handle space(H5Dget_space(set), H5Sclose);
     hsize_t dims[2] = {0, 1};
-    const int rank = H5Sget_simple_extent_dims(space, dims, nullptr);
+    const int rank = space.id < 0 ? -1 : H5Sget_simple_extent_dims(space, dims, nullptr);
+    if (rank < 1 || rank > 2) throw std::runtime_error(path + ": dataset '" + name + "' is not a table of rows");
     std::vector<double> v(with_values ? dims[0] * (rank == 2 ? dims[1] : 1) : 0);
-    if (!v.empty()) check(H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), "reading " + std::string(name));
+    if (!v.empty() && H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
+      throw std::runtime_error(path + ": dataset '" + name + "' cannot be read (truncated or corrupted file)");
     d.names.emplace_back(name);
     d.components.push_back(rank == 2 ? static_cast<int>(dims[1]) : 1);
     d.particles = dims[0];
     d.values.push_back(std::move(v));
-    H5Sclose(space);
-    H5Dclose(set);
   }
-  H5Fclose(file);
   return d;
 }
 
