@@ -233,6 +233,12 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ondine: error: %s\n", e.what());
     rc = 1;
+    // a failure on one rank (a file only rank 0 writes, for one) leaves the others waiting in
+    // a collective that never completes, and MPI_Finalize would wait for them: end every rank
+    if (ranks > 1) {
+      std::fflush(stderr);
+      MPI_Abort(MPI_COMM_WORLD, rc);
+    }
   }
   if (no_device.empty()) Kokkos::finalize();
   MPI_Finalize();
