@@ -147,6 +147,28 @@ struct OpenClassify {
   }
 };
 
+// With refinement zones: the removed particles that have a mother (a daughter that drifted
+// out with the stream while her mother stays a mother), packed as (mother level, mother id,
+// -m) for AdaptiveRefinement::remove_from_families, so that every mother keeps holding her
+// daughters' mass (the leaves' mass stays exact when the mother derefines)
+template <int D>
+struct OpenFamilyLosses {
+  Kokkos::View<int*, MemSpace> action;
+  field_view_t<field::AprBirthLevel, D> birth;
+  field_view_t<field::AprParent, D> parent;
+  field_view_t<field::Mass, D> m;
+  Kokkos::View<double*, MemSpace> out;  // 3 per loss; sized by a first pass with out empty
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, int& k, const bool final) const {
+    if (action(i) != open_action::remove || parent(i) < 0) return;
+    if (final && out.extent(0) > 0) {
+      out(3 * k) = static_cast<double>(birth(i) - 1);
+      out(3 * k + 1) = static_cast<double>(parent(i));
+      out(3 * k + 2) = -m(i);
+    }
+    ++k;
+  }
+};
+
 // the spawned copies [kept, kept + n), after the gather (kernels/ParticleSetEdit.hpp): moved L_b
 // upstream, into the buffer of the boundary their source crossed (spawn_boundary, by the
 // source's index before the gather), with new ids next_id + (the rank of their source's id

@@ -38,6 +38,7 @@ void write_checkpoint(const std::string& path, const CheckpointHeader& h, std::i
     f.attribute("refinement_families_moved", a.families_moved);
     f.attribute("refinement_adopted", a.adopted);
     f.attribute("refinement_orphans_deleted", a.orphans_deleted);
+    f.attribute("refinement_outflow_daughters", a.outflow_daughters);
     f.attribute("refinement_guard_shifts", a.guard_shifts);
     f.attribute("refinement_guards_limited", a.guards_limited);
     if (!a.level_steps.empty()) f.attribute("refinement_level_steps", a.level_steps);
@@ -113,6 +114,7 @@ CheckpointSlice read_checkpoint(const std::string& path, const Communicator& com
       a.families_moved = r.has("refinement_families_moved") ? r.attribute_int("refinement_families_moved") : 0;
       a.adopted = r.has("refinement_adopted") ? r.attribute_int("refinement_adopted") : 0;
       a.orphans_deleted = r.has("refinement_orphans_deleted") ? r.attribute_int("refinement_orphans_deleted") : 0;
+      a.outflow_daughters = r.has("refinement_outflow_daughters") ? r.attribute_int("refinement_outflow_daughters") : 0;
       a.guard_shifts = r.has("refinement_guard_shifts") ? r.attribute_int("refinement_guard_shifts") : 0;
       a.guards_limited = r.has("refinement_guards_limited") ? r.attribute_int("refinement_guards_limited") : 0;
       if (r.has("refinement_level_steps")) a.level_steps = r.attribute_doubles("refinement_level_steps");

@@ -34,6 +34,7 @@ struct CheckpointRefinement {
   std::int64_t families_moved = 0;    // families moved off a wall since t = 0 (DaughterWallClearance)
   std::int64_t adopted = 0;           // daughters adopted since t = 0 (kernels/apr/Adoption.hpp)
   std::int64_t orphans_deleted = 0;   // daughters inside their zone deleted for want of an adopter since t = 0
+  std::int64_t outflow_daughters = 0; // daughters removed by an open boundary while their mother was one, since t = 0
   std::int64_t guard_shifts = 0;      // daughter guards shifted since t = 0, all ranks (GuardSpacing)
   std::int64_t guards_limited = 0;    // guard interpolations limited since t = 0, all ranks (GuardApply)
   std::vector<double> level_steps;    // local time stepping: the steps of each level since t = 0 (exact integers)

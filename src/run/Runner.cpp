@@ -215,6 +215,7 @@ nlohmann::json run_summary(const Scene& scene, const RunOptions& opt, const Simu
                        {"deleted", apr.deleted()},
                        {"adopted", apr.adopted()},
                        {"orphans_deleted", apr.orphans_deleted()},
+                       {"outflow_daughters", apr.outflow_daughters()},
                        {"local_time_stepping", scene.refinement_local_time_stepping}};
     // with local time stepping, the steps each level took since t = 0 (2^l per coarse step where it has particles)
     if (!sim.level_steps().empty()) j["refinement"]["level_steps"] = sim.level_steps();

@@ -80,6 +80,9 @@ class AdaptiveRefinement {
   // those inside it that found no adopter and went with their family
   std::int64_t adopted() const { return adopted_; }
   std::int64_t orphans_deleted() const { return orphans_deleted_; }
+  // daughters an open boundary removed while their mother was still one: their mass left the
+  // mother (and hers) at the next bookkeeping (remove_from_families)
+  std::int64_t outflow_daughters() const { return outflow_daughters_; }
   std::int64_t guard_shifts() const { return guard_shifts_; }  // daughter guards shifted (GuardSpacing), summed over steps
   // guard interpolations put back into their sources' range (apr::GuardApply::limit), summed over stages
   std::int64_t guards_limited() const { return guards_limited_; }
@@ -119,6 +122,7 @@ class AdaptiveRefinement {
     c.families_moved = families_moved_;
     c.adopted = adopted_;
     c.orphans_deleted = orphans_deleted_;
+    c.outflow_daughters = outflow_daughters_;
     for (int a = 0; a < 3; ++a) c.momentum_change[a] = a < D ? momentum_change_[a] : 0.0;
     c.momentum_scale = momentum_scale_;
     c.offset.assign(3 * scene_zones_.size(), 0.0);
@@ -143,6 +147,7 @@ class AdaptiveRefinement {
     families_moved_ = c.families_moved;
     adopted_ = c.adopted;
     orphans_deleted_ = c.orphans_deleted;
+    outflow_daughters_ = c.outflow_daughters;
     for (int a = 0; a < D; ++a) momentum_change_[a] = c.momentum_change[a];
     momentum_scale_ = c.momentum_scale;
     for (std::size_t z = 0; z < scene_zones_.size(); ++z)
@@ -232,7 +237,14 @@ class AdaptiveRefinement {
       }
       dying_above = all;
     }
-    if (adoption_) pass_mass_changes(p, n, comm, action, changes);
+    // the daughters an open boundary removed since the last bookkeeping leave their mothers
+    for (std::size_t k = 0; k + 2 < pending_losses_.size(); k += 3) {
+      const int l = static_cast<int>(pending_losses_[k]);
+      if (l >= 0 && l < levels_ - 1) changes[l].insert(changes[l].end(), {pending_losses_[k + 1], pending_losses_[k + 2]});
+    }
+    outflow_daughters_ += comm.sum(static_cast<std::int64_t>(pending_losses_.size() / 3));
+    pending_losses_.clear();
+    pass_mass_changes(p, n, comm, action, changes);
     // the survivors, then 2^D copies of each refining mother (kernels/ParticleSetEdit.hpp)
     const edit::Plan plan = edit::plan(action, n, apr::Delete, apr::Refine, 1 << D, "ondine::APR");
     const int kept = plan.kept, nref = plan.spawned;
@@ -443,7 +455,14 @@ private:
     append_pairs(scan, n, 4, "ondine::APR::adoption_pairs", out);
   }
 
-  // The mass changes of the adoptions, from the finest mother level up: each mother takes the
+  // The daughters an open boundary removed (kernels/OpenBoundary.hpp, OpenFamilyLosses: triples
+  // (mother level, mother id, -m) of this rank): their mass leaves their mothers at the next
+  // bookkeeping, which follows the removal in the same step start (the lists are invalid then).
+  void remove_from_families(const std::vector<double>& losses) {
+    pending_losses_.insert(pending_losses_.end(), losses.begin(), losses.end());
+  }
+
+  // The mass changes of the adoptions and of the removals above, from the finest mother level up: each mother takes the
   // sum of hers (gathered by id on every rank: a mother may live on another rank than her
   // daughters) and passes it on to her own mother, so that every mother holds the sum of her
   // daughters' masses.
@@ -527,7 +546,8 @@ private:
   Kokkos::View<int*, MemSpace> used_;  // per guard: its Lx entries within the interpolation radius (first in its row)
   unsigned weights_valid_ = 0;  // bit l: the shape functions of level l's guards are up to date
   std::int64_t next_id_ = 0, refined_ = 0, deleted_ = 0, families_moved_ = 0, guard_shifts_ = 0, guards_limited_ = 0,
-               adopted_ = 0, orphans_deleted_ = 0;
+               adopted_ = 0, orphans_deleted_ = 0, outflow_daughters_ = 0;
+  std::vector<double> pending_losses_;  // remove_from_families' triples, until the next bookkeeping
   double interp_seconds_ = 0;
   double momentum_change_[D] = {}, momentum_scale_ = 0;
 };

@@ -189,6 +189,7 @@ class OpenBoundaries {
     removed_count_ += removed;
     changed = created + removed > 0;
     if (!changed) return n;
+    if (p.has(field::AprParent{})) pack_family_losses(p, action, n);
     edit::order(plan, action, n, open_action::remove, open_action::spawn, 1, "ondine::Open");
     const auto all_sources =
         sorted_on_every_rank(edit::spawner_ids(plan, p.get(field::GlobalId{}), "ondine::Open"), comm, "ondine::Open::all_sources");
@@ -201,6 +202,10 @@ class OpenBoundaries {
     next_id += created;
     return kept + ns;
   }
+
+  // With refinement zones: the (mother level, mother id, -m) triples of the daughters the last
+  // classify removed (OpenFamilyLosses), taken once
+  std::vector<double> take_family_losses() { return std::move(family_losses_); }
 
   // The facets' sample points, on the device (FacetSample)
   const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& facet_points() const { return points_; }
@@ -319,7 +324,20 @@ class OpenBoundaries {
   Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace> points_;
   Kokkos::View<double**, Kokkos::LayoutRight, MemSpace> state_, sums_;
   Kokkos::View<double*, MemSpace> J_mean_;
-  std::vector<double> host_, geometry_;
+  // the removed daughters' (mother level, mother id, -m), packed on the device and copied here
+  void pack_family_losses(ParticleSet<D>& p, const Kokkos::View<int*, MemSpace>& action, int n) {
+    OpenFamilyLosses<D> f{action, p.get(field::AprBirthLevel{}), p.get(field::AprParent{}), p.get(field::Mass{}), {}};
+    int count = 0;
+    Kokkos::parallel_scan("ondine::Open::family_losses_count", Kokkos::RangePolicy<ExecSpace>(0, n), f, count);
+    if (count == 0) return;
+    f.out = Kokkos::View<double*, MemSpace>("ondine::Open::family_losses", 3 * static_cast<std::size_t>(count));
+    int again = 0;
+    Kokkos::parallel_scan("ondine::Open::family_losses", Kokkos::RangePolicy<ExecSpace>(0, n), f, again);
+    const auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), f.out);
+    family_losses_.insert(family_losses_.end(), h.data(), h.data() + h.extent(0));
+  }
+
+  std::vector<double> host_, geometry_, family_losses_;
   OpenTally tally_;
   std::vector<OpenFlux> flux_;
   std::int64_t next_id_ = 0, created_count_ = 0, removed_count_ = 0;

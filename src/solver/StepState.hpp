@@ -44,6 +44,8 @@ class StepState {
   // the counter new particles take their global ids from where another part hands them out
   // too (the refinement's), or null
   std::int64_t* shared_id_counter() { return sim_.refinement_ ? &sim_.refinement_->apr().id_counter() : nullptr; }
+  // the refinement's bookkeeping, or null without refinement zones
+  AdaptiveRefinement<D>* adaptive_refinement() { return sim_.refinement_ ? &sim_.refinement_->apr() : nullptr; }
   bool has_walls() const { return !sim_.walls_.empty(); }
   const WallModel<D>& walls() const { return sim_.walls_; }
   void update_walls(double t) { sim_.update_walls(t); }

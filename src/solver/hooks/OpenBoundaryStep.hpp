@@ -36,6 +36,9 @@ class OpenBoundaryStep final : public StepHook<D> {
   void step_start(StepState<D>& s) override {
     bool changed = false;
     s.set_owned(open_.classify(s.particles(), s.owned(), s.comm(), changed, s.shared_id_counter()));
+    // daughters removed with the stream leave their mothers' mass too (at the bookkeeping that
+    // follows the edit, before any checkpoint)
+    if (AdaptiveRefinement<D>* apr = s.adaptive_refinement()) apr->remove_from_families(open_.take_family_losses());
     if (changed) s.particles_changed();  // on every rank
   }
   void after_lists(StepState<D>& s) override {
