@@ -83,6 +83,12 @@ class AdaptiveRefinement {
   // daughters an open boundary removed while their mother was still one: their mass left the
   // mother (and hers) at the next bookkeeping (remove_from_families)
   std::int64_t outflow_daughters() const { return outflow_daughters_; }
+  // The daughters an open boundary removed (kernels/OpenBoundary.hpp, OpenFamilyLosses: triples
+  // (mother level, mother id, -m) of this rank): their mass leaves their mothers at the next
+  // bookkeeping, which follows the removal in the same step start (the lists are invalid then).
+  void remove_from_families(const std::vector<double>& losses) {
+    pending_losses_.insert(pending_losses_.end(), losses.begin(), losses.end());
+  }
   std::int64_t guard_shifts() const { return guard_shifts_; }  // daughter guards shifted (GuardSpacing), summed over steps
   // guard interpolations put back into their sources' range (apr::GuardApply::limit), summed over stages
   std::int64_t guards_limited() const { return guards_limited_; }
@@ -455,14 +461,8 @@ private:
     append_pairs(scan, n, 4, "ondine::APR::adoption_pairs", out);
   }
 
-  // The daughters an open boundary removed (kernels/OpenBoundary.hpp, OpenFamilyLosses: triples
-  // (mother level, mother id, -m) of this rank): their mass leaves their mothers at the next
-  // bookkeeping, which follows the removal in the same step start (the lists are invalid then).
-  void remove_from_families(const std::vector<double>& losses) {
-    pending_losses_.insert(pending_losses_.end(), losses.begin(), losses.end());
-  }
-
-  // The mass changes of the adoptions and of the removals above, from the finest mother level up: each mother takes the
+  // The mass changes of the adoptions and of the open boundaries' removals (remove_from_families),
+  // from the finest mother level up: each mother takes the
   // sum of hers (gathered by id on every rank: a mother may live on another rank than her
   // daughters) and passes it on to her own mother, so that every mother holds the sum of her
   // daughters' masses.
