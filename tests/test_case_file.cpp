@@ -80,6 +80,10 @@ TEST_CASE("Command-line overrides change a key, and a bad override is named", "[
   CHECK_THAT(error_of(good, {"discretisation.dx=-1"}), Contains("--set discretisation.dx") && Contains("positive"));
   CHECK_THAT(error_of(good, {"nonsense"}), Contains("expected key=value"));
   CHECK_THAT(error_of(good, {"fluid.colour=blue"}), Contains("fluid.colour") && Contains("unknown key"));
+  // a key an override made above the one it sets (no line in the file): the override is named
+  CHECK_THAT(error_of(good, {"nothere.key=1"}), Contains("--set nothere.key: key 'nothere'") && Contains("unknown key") &&
+                                                    !Contains("cases/box.yaml"));
+  CHECK_THAT(error_of(good, {"fluid.extra.depth=1"}), Contains("--set fluid.extra.depth: key 'fluid.extra'") && Contains("unknown key"));
 }
 
 TEST_CASE("Bad case files get a message naming file, line and key", "[unit][case]") {

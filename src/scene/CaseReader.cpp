@@ -5,10 +5,33 @@
 
 namespace ondine::case_file {
 
+namespace {
+// a key path in the overrides' dotted form (list items as key.N, where the reader writes key[N])
+std::string dotted(const std::string& key) {
+  std::string d;
+  for (const char c : key) {
+    if (c == '[') d += '.';
+    else if (c != ']') d += c;
+  }
+  return d;
+}
+}  // namespace
+
 void Reader::fail(const YAML::Node& at, const std::string& key, const std::string& what) const {
   std::ostringstream m;
+  // a key that an override made (no place in the file), below which an override wrote: that override
+  std::string via;
+  const bool from_file = at.IsDefined() && at.Mark().line >= 0;
+  if (!from_file)
+    for (const std::string& o : overridden_)
+      if (o.rfind(dotted(key) + ".", 0) == 0) {
+        via = o;
+        break;
+      }
   if (overridden_.count(key)) {
     m << "--set " << key << ": " << what;
+  } else if (!via.empty()) {
+    m << "--set " << via << ": key '" << key << "': " << what;
   } else {
     m << file_;
     const YAML::Mark mk = at.IsDefined() ? at.Mark() : YAML::Mark::null_mark();
