@@ -205,7 +205,11 @@ class OpenBoundaries {
 
   // With refinement zones: the (mother level, mother id, -m) triples of the daughters the last
   // classify removed (OpenFamilyLosses), taken once
-  std::vector<double> take_family_losses() { return std::move(family_losses_); }
+  std::vector<double> take_family_losses() {
+    std::vector<double> taken;
+    taken.swap(family_losses_);  // left empty, not merely moved from
+    return taken;
+  }
 
   // The facets' sample points, on the device (FacetSample)
   const Kokkos::View<double* [D], Kokkos::LayoutLeft, MemSpace>& facet_points() const { return points_; }
